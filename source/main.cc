@@ -2,8 +2,7 @@
 
 #include <deal.II/base/mpi.h>
 
-int
-main (int argc, char **argv)
+int main (int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi (argc, argv, 1);
   return wetbed::run_application (argc, argv);

@@ -5,259 +5,298 @@
 
 namespace wetbed
 {
-  using namespace dealii;
+using namespace dealii;
 
-  /**
-   * Assembles the Oseen-linearised two-fluid system at t_{n+1} (DESIGN s1, s4.5):
-   *   gas:    a0 a_g rho_g u_g/dt + a_g rho_g (u_g*.grad) u_g - div tau_g + beta (u_g - u_s)
-   *           - (p', div(a_g v)) = rhs
-   *   solids: a0 a_s rho_s u_s/dt + a_s rho_s (u_s*.grad) u_s - div tau_s - beta (u_g - u_s)
-   *           - (p', div(a_s v)) = (P_s, div v) + a_s (rho_s - rho_g) g + rhs
-   *   mixture continuity: -(q, div(a_g u_g + a_s u_s)) = 0
-   * with beta, P_s, mu_s lagged (closures evaluated once per quadrature point), and the
-   * partial-elimination Schur mobility Laplacian L_c for the preconditioner.
-   */
-  template <int dim>
-  void
-  TwoFluidSolver<dim>::assemble_flow_system (const BDFCoefficients &bdf, const double dt)
-  {
-    TimerOutput::Scope scope (timer, "flow assembly");
-    flow_matrix    = 0;
-    schur_matrix   = 0;
-    flow_rhs       = 0;
-    const auto &pp = parameters.physical;
-    const double rho_g = pp.gas_density, rho_s = pp.particle_density, mu_g = pp.gas_viscosity;
-    Tensor<1, dim> gravity;
-    for (unsigned int d = 0; d < dim; ++d)
-      gravity[d] = pp.gravity[d];
+/**
+ * Assembles the Oseen-linearised two-fluid system at t_{n+1} (DESIGN s1, s4.5):
+ *   gas:    a0 a_g rho_g u_g/dt + a_g rho_g (u_g*.grad) u_g - div tau_g + beta (u_g -
+ * u_s)
+ *           - (p', div(a_g v)) = rhs
+ *   solids: a0 a_s rho_s u_s/dt + a_s rho_s (u_s*.grad) u_s - div tau_s - beta (u_g -
+ * u_s)
+ *           - (p', div(a_s v)) = (P_s, div v) + a_s (rho_s - rho_g) g + rhs
+ *   mixture continuity: -(q, div(a_g u_g + a_s u_s)) = 0
+ * with beta, P_s, mu_s lagged (closures evaluated once per quadrature point), and the
+ * partial-elimination Schur mobility Laplacian L_c for the preconditioner.
+ */
+template <int dim>
+void TwoFluidSolver<dim>::assemble_flow_system (const BDFCoefficients &bdf,
+                                                const double           dt)
+{
+  TimerOutput::Scope scope (timer, "flow assembly");
+  flow_matrix        = 0;
+  schur_matrix       = 0;
+  flow_rhs           = 0;
+  const auto  &pp    = parameters.physical;
+  const double rho_g = pp.gas_density, rho_s = pp.particle_density,
+               mu_g = pp.gas_viscosity;
+  Tensor<1, dim> gravity;
+  for (unsigned int d = 0; d < dim; ++d)
+    gravity[d] = pp.gravity[d];
 
-    const QGauss<dim>     quadrature (3);
-    const QGauss<dim - 1> face_quadrature (3);
-    FEValues<dim>         fe_values (mapping,
-                             flow_fe,
-                             quadrature,
-                             update_values | update_gradients | update_quadrature_points |
+  const QGauss<dim>     quadrature (3);
+  const QGauss<dim - 1> face_quadrature (3);
+  FEValues<dim>         fe_values (mapping,
+                           flow_fe,
+                           quadrature,
+                           update_values | update_gradients | update_quadrature_points |
                                update_JxW_values);
-    FEValues<dim>         alpha_values (mapping, alpha_fe, quadrature, update_values | update_gradients);
-    FEFaceValues<dim>     face_values (mapping,
-                                   flow_fe,
-                                   face_quadrature,
-                                   update_values | update_normal_vectors |
+  FEValues<dim>         alpha_values (
+      mapping, alpha_fe, quadrature, update_values | update_gradients);
+  FEFaceValues<dim> face_values (mapping,
+                                 flow_fe,
+                                 face_quadrature,
+                                 update_values | update_normal_vectors |
                                      update_quadrature_points | update_JxW_values);
-    FEFaceValues<dim>     alpha_face_values (mapping, alpha_fe, face_quadrature, update_values);
+  FEFaceValues<dim> alpha_face_values (mapping, alpha_fe, face_quadrature, update_values);
 
-    const unsigned int n_dofs = flow_fe.n_dofs_per_cell ();
-    const unsigned int n_q    = quadrature.size ();
-    FullMatrix<double> cell_matrix (n_dofs, n_dofs), cell_schur (n_dofs, n_dofs);
-    Vector<double>     cell_rhs (n_dofs);
-    std::vector<types::global_dof_index> dofs (n_dofs);
+  const unsigned int n_dofs = flow_fe.n_dofs_per_cell ();
+  const unsigned int n_q    = quadrature.size ();
+  FullMatrix<double> cell_matrix (n_dofs, n_dofs), cell_schur (n_dofs, n_dofs);
+  Vector<double>     cell_rhs (n_dofs);
+  std::vector<types::global_dof_index> dofs (n_dofs);
 
-    std::vector<unsigned int> component (n_dofs);
-    for (unsigned int i = 0; i < n_dofs; ++i)
-      component[i] = flow_fe.system_to_component_index (i).first;
+  std::vector<unsigned int> component (n_dofs);
+  for (unsigned int i = 0; i < n_dofs; ++i)
+    component[i] = flow_fe.system_to_component_index (i).first;
 
-    const FEValuesExtractors::Vector gas (0), solids (dim);
-    std::vector<double>              a_s (n_q);
-    std::vector<Tensor<1, dim>>      grad_a_s (n_q);
-    std::vector<Tensor<1, dim>>      ug_lag (n_q), us_lag (n_q), ug_old (n_q), us_old (n_q),
+  const FEValuesExtractors::Vector gas (0), solids (dim);
+  std::vector<double>              a_s (n_q);
+  std::vector<Tensor<1, dim>>      grad_a_s (n_q);
+  std::vector<Tensor<1, dim>>      ug_lag (n_q), us_lag (n_q), ug_old (n_q), us_old (n_q),
       ug_old2 (n_q), us_old2 (n_q);
-    std::vector<Tensor<2, dim>> grad_us_lag (n_q);
-    std::vector<double>         phi (n_dofs);
-    std::vector<Tensor<1, dim>> grad_phi (n_dofs);
+  std::vector<Tensor<2, dim>> grad_us_lag (n_q);
+  std::vector<double>         phi (n_dofs);
+  std::vector<Tensor<1, dim>> grad_phi (n_dofs);
 
-    const bool   partial_slip = parameters.boundary.solids_wall == WallCondition::partial_slip &&
-                              !manufactured;
-    const double wall_friction = parameters.boundary.solids_wall_friction;
+  const bool partial_slip =
+      parameters.boundary.solids_wall == WallCondition::partial_slip && !manufactured;
+  const double wall_friction = parameters.boundary.solids_wall_friction;
+  const bool   stabilized    = parameters.stabilization;
 
-    auto alpha_cell = alpha_dof_handler.begin_active ();
-    for (const auto &cell : flow_dof_handler.active_cell_iterators ())
+  auto alpha_cell = alpha_dof_handler.begin_active ();
+  for (const auto &cell : flow_dof_handler.active_cell_iterators ())
+  {
+    if (!cell->is_locally_owned ())
+    {
+      ++alpha_cell;
+      continue;
+    }
+    fe_values.reinit (cell);
+    alpha_values.reinit (alpha_cell);
+    alpha_values.get_function_values (alpha, a_s);
+    alpha_values.get_function_gradients (alpha, grad_a_s);
+    fe_values[gas].get_function_values (flow_solution, ug_lag);
+    fe_values[solids].get_function_values (flow_solution, us_lag);
+    fe_values[solids].get_function_gradients (flow_solution, grad_us_lag);
+    fe_values[gas].get_function_values (flow_old, ug_old);
+    fe_values[solids].get_function_values (flow_old, us_old);
+    fe_values[gas].get_function_values (flow_old2, ug_old2);
+    fe_values[solids].get_function_values (flow_old2, us_old2);
+    const double h = cell->diameter () / std::sqrt (double (dim));
+
+    cell_matrix = 0;
+    cell_schur  = 0;
+    cell_rhs    = 0;
+    for (unsigned int q = 0; q < n_q; ++q)
+    {
+      const double         alpha_s = a_s[q], alpha_g = 1.0 - alpha_s;
+      const Tensor<1, dim> grad_alpha_s = grad_a_s[q], grad_alpha_g = -grad_a_s[q];
+      // closures, once per quadrature point
+      const double slip = (ug_lag[q] - us_lag[q]).norm ();
+      const double beta =
+          alpha_s > 0 ? drag->coefficient (alpha_s, slip, gas_particle) : 0.0;
+      const SymmetricTensor<2, dim> strain   = symmetrize (grad_us_lag[q]);
+      const SymmetricTensor<2, dim> deviator = deviator_tensor<dim> () * strain;
+      const closures::SolidsStress  stress =
+          solids_stress->evaluate ({alpha_s, 0.0, std::sqrt (2.0 * deviator * deviator)});
+      const double mu_s = stress.shear_viscosity, lambda_s = stress.bulk_viscosity;
+      const double JxW = fe_values.JxW (q);
+
+      const double inertia_g = alpha_g * rho_g, inertia_s = alpha_s * rho_s;
+      const double mass_g = bdf.a0 * inertia_g / dt, mass_s = bdf.a0 * inertia_s / dt;
+      const Tensor<1, dim> history_g =
+          -(bdf.a1 * ug_old[q] + bdf.a2 * ug_old2[q]) * inertia_g / dt;
+      Tensor<1, dim> force_s =
+          -(bdf.a1 * us_old[q] + bdf.a2 * us_old2[q]) * inertia_s / dt +
+          alpha_s * (rho_s - rho_g) * gravity;
+      Tensor<1, dim> force_g       = history_g;
+      double         volume_source = 0;
+      if (manufactured)
       {
-        if (!cell->is_locally_owned ())
-          {
-            ++alpha_cell;
-            continue;
-          }
-        fe_values.reinit (cell);
-        alpha_values.reinit (alpha_cell);
-        alpha_values.get_function_values (alpha, a_s);
-        alpha_values.get_function_gradients (alpha, grad_a_s);
-        fe_values[gas].get_function_values (flow_solution, ug_lag);
-        fe_values[solids].get_function_values (flow_solution, us_lag);
-        fe_values[solids].get_function_gradients (flow_solution, grad_us_lag);
-        fe_values[gas].get_function_values (flow_old, ug_old);
-        fe_values[solids].get_function_values (flow_old, us_old);
-        fe_values[gas].get_function_values (flow_old2, ug_old2);
-        fe_values[solids].get_function_values (flow_old2, us_old2);
-        const double h = cell->diameter () / std::sqrt (double (dim));
-
-        cell_matrix = 0;
-        cell_schur  = 0;
-        cell_rhs    = 0;
-        for (unsigned int q = 0; q < n_q; ++q)
-          {
-            const double alpha_s = a_s[q], alpha_g = 1.0 - alpha_s;
-            const Tensor<1, dim> grad_alpha_s = grad_a_s[q], grad_alpha_g = -grad_a_s[q];
-            // closures, once per quadrature point
-            const double slip = (ug_lag[q] - us_lag[q]).norm ();
-            const double beta = alpha_s > 0 ? drag->coefficient (alpha_s, slip, gas_particle) : 0.0;
-            const SymmetricTensor<2, dim> strain = symmetrize (grad_us_lag[q]);
-            const SymmetricTensor<2, dim> deviator = deviator_tensor<dim> () * strain;
-            const closures::SolidsStress stress =
-              solids_stress->evaluate ({alpha_s, 0.0, std::sqrt (2.0 * deviator * deviator)});
-            const double mu_s = stress.shear_viscosity, lambda_s = stress.bulk_viscosity;
-            const double JxW = fe_values.JxW (q);
-
-            const double inertia_g = alpha_g * rho_g, inertia_s = alpha_s * rho_s;
-            const double mass_g = bdf.a0 * inertia_g / dt, mass_s = bdf.a0 * inertia_s / dt;
-            const Tensor<1, dim> history_g =
-              -(bdf.a1 * ug_old[q] + bdf.a2 * ug_old2[q]) * inertia_g / dt;
-            Tensor<1, dim> force_s =
-              -(bdf.a1 * us_old[q] + bdf.a2 * us_old2[q]) * inertia_s / dt +
-              alpha_s * (rho_s - rho_g) * gravity;
-            Tensor<1, dim> force_g = history_g;
-            double         volume_source = 0;
-            if (manufactured)
-              {
-                const Point<dim> &x = fe_values.quadrature_point (q);
-                force_g += manufactured->gas_momentum_source (x);
-                force_s += manufactured->solids_momentum_source (x);
-                volume_source = manufactured->mixture_volume_source (x);
-              }
-            // partial-elimination mobility of the mixture volume flux (DESIGN s5)
-            const double a_g_local = mass_g + alpha_g * mu_g / (h * h);
-            const double a_s_local = mass_s + mu_s / (h * h);
-            const double mobility =
-              (alpha_g * alpha_g * a_s_local + alpha_s * alpha_s * a_g_local + beta) /
-              (a_g_local * a_s_local + beta * (a_g_local + a_s_local));
-
-            const double   viscosity[2]  = {alpha_g * mu_g, mu_s};
-            const double   bulk[2]       = {-2.0 / 3.0 * alpha_g * mu_g, lambda_s - 2.0 / 3.0 * mu_s};
-            const double   mass[2]       = {mass_g, mass_s};
-            const double   inertia[2]    = {inertia_g, inertia_s};
-            const double   fraction[2]   = {alpha_g, alpha_s};
-            const Tensor<1, dim> grad_fraction[2] = {grad_alpha_g, grad_alpha_s};
-            const Tensor<1, dim> advecting[2]     = {ug_lag[q], us_lag[q]};
-            const Tensor<1, dim> force[2]         = {force_g, force_s};
-
-            for (unsigned int i = 0; i < n_dofs; ++i)
-              {
-                phi[i]      = fe_values.shape_value (i, q);
-                grad_phi[i] = fe_values.shape_grad (i, q);
-              }
-
-            for (unsigned int i = 0; i < n_dofs; ++i)
-              {
-                const unsigned int ci = component[i];
-                if (ci < 2 * dim)
-                  {
-                    const unsigned int k = ci / dim, d = ci % dim;
-                    cell_rhs (i) += force[k][d] * phi[i] * JxW;
-                    if (k == 1)
-                      cell_rhs (i) += stress.pressure * grad_phi[i][d] * JxW;
-                    const double convect_i = 0; // Galerkin (no SUPG yet)
-                    (void)convect_i;
-                    for (unsigned int j = 0; j < n_dofs; ++j)
-                      {
-                        const unsigned int cj = component[j];
-                        double             value = 0;
-                        if (cj < 2 * dim)
-                          {
-                            const unsigned int l = cj / dim, e = cj % dim;
-                            if (k == l)
-                              {
-                                if (d == e)
-                                  value += (mass[k] + beta) * phi[i] * phi[j] +
-                                           inertia[k] * (advecting[k] * grad_phi[j]) * phi[i] +
-                                           viscosity[k] * (grad_phi[i] * grad_phi[j]);
-                                value += viscosity[k] * grad_phi[j][d] * grad_phi[i][e] +
-                                         bulk[k] * grad_phi[j][e] * grad_phi[i][d];
-                              }
-                            else if (d == e)
-                              value -= beta * phi[i] * phi[j];
-                          }
-                        else // pressure trial: -(p', div(alpha_k v))
-                          value -= phi[j] * (fraction[k] * grad_phi[i][d] +
-                                             phi[i] * grad_fraction[k][d]);
-                        cell_matrix (i, j) += value * JxW;
-                      }
-                  }
-                else
-                  {
-                    cell_rhs (i) -= volume_source * phi[i] * JxW;
-                    for (unsigned int j = 0; j < n_dofs; ++j)
-                      {
-                        const unsigned int cj = component[j];
-                        if (cj < 2 * dim)
-                          {
-                            const unsigned int l = cj / dim, e = cj % dim;
-                            cell_matrix (i, j) -= phi[i] *
-                                                  (fraction[l] * grad_phi[j][e] +
-                                                   phi[j] * grad_fraction[l][e]) *
-                                                  JxW;
-                          }
-                        else
-                          cell_schur (i, j) += mobility * (grad_phi[i] * grad_phi[j]) * JxW;
-                      }
-                  }
-              }
-          }
-
-        // boundary terms: solids partial slip on walls, verification tractions on the outlet
-        for (const auto &face : cell->face_iterators ())
-          {
-            if (!face->at_boundary ())
-              continue;
-            const auto id = face->boundary_id ();
-            const bool wall_friction_face = partial_slip && id == boundary_ids.wall;
-            const bool traction_face      = manufactured && id == boundary_ids.outlet;
-            if (!wall_friction_face && !traction_face)
-              continue;
-            face_values.reinit (cell, face);
-            for (unsigned int q = 0; q < face_quadrature.size (); ++q)
-              {
-                const Tensor<1, dim> n   = face_values.normal_vector (q);
-                const double         JxW = face_values.JxW (q);
-                Tensor<1, dim>       traction[2];
-                if (traction_face)
-                  {
-                    traction[0] = manufactured->gas_traction (face_values.quadrature_point (q), n);
-                    traction[1] = manufactured->solids_traction (face_values.quadrature_point (q), n);
-                  }
-                for (unsigned int i = 0; i < n_dofs; ++i)
-                  {
-                    const unsigned int ci = component[i];
-                    if (ci >= 2 * dim)
-                      continue;
-                    const unsigned int k = ci / dim, d = ci % dim;
-                    const double       phi_i = face_values.shape_value (i, q);
-                    if (traction_face)
-                      cell_rhs (i) += traction[k][d] * phi_i * JxW;
-                    if (wall_friction_face && k == 1)
-                      for (unsigned int j = 0; j < n_dofs; ++j)
-                        {
-                          const unsigned int cj = component[j];
-                          if (cj < dim || cj >= 2 * dim)
-                            continue;
-                          const unsigned int e = cj % dim;
-                          // C (P_t u).(P_t v) with P_t = I - n n
-                          const double projector = (d == e ? 1.0 : 0.0) - n[d] * n[e];
-                          cell_matrix (i, j) += wall_friction * projector * phi_i *
-                                                face_values.shape_value (j, q) * JxW;
-                        }
-                  }
-              }
-          }
-
-        cell->get_dof_indices (dofs);
-        flow_constraints.distribute_local_to_global (cell_matrix, cell_rhs, dofs, flow_matrix, flow_rhs);
-        schur_constraints.distribute_local_to_global (cell_schur, dofs, schur_matrix);
-        ++alpha_cell;
+        const Point<dim> &x = fe_values.quadrature_point (q);
+        force_g += manufactured->gas_momentum_source (x);
+        force_s += manufactured->solids_momentum_source (x);
+        volume_source = manufactured->mixture_volume_source (x);
       }
-    flow_matrix.compress (VectorOperation::add);
-    schur_matrix.compress (VectorOperation::add);
-    flow_rhs.compress (VectorOperation::add);
-  }
+      // partial-elimination mobility of the mixture volume flux (DESIGN s5)
+      const double a_g_local = mass_g + alpha_g * mu_g / (h * h);
+      const double a_s_local = mass_s + mu_s / (h * h);
+      const double mobility =
+          (alpha_g * alpha_g * a_s_local + alpha_s * alpha_s * a_g_local + beta) /
+          (a_g_local * a_s_local + beta * (a_g_local + a_s_local));
 
-  template void TwoFluidSolver<2>::assemble_flow_system (const BDFCoefficients &, double);
-  template void TwoFluidSolver<3>::assemble_flow_system (const BDFCoefficients &, double);
+      const double viscosity[2] = {alpha_g * mu_g, mu_s};
+      const double bulk[2] = {-2.0 / 3.0 * alpha_g * mu_g, lambda_s - 2.0 / 3.0 * mu_s};
+      const double mass[2] = {mass_g, mass_s};
+      const double inertia[2]               = {inertia_g, inertia_s};
+      const double fraction[2]              = {alpha_g, alpha_s};
+      const Tensor<1, dim> grad_fraction[2] = {grad_alpha_g, grad_alpha_s};
+      const Tensor<1, dim> advecting[2]     = {ug_lag[q], us_lag[q]};
+      const Tensor<1, dim> force[2]         = {force_g, force_s};
+
+      for (unsigned int i = 0; i < n_dofs; ++i)
+      {
+        phi[i]      = fe_values.shape_value (i, q);
+        grad_phi[i] = fe_values.shape_grad (i, q);
+      }
+      // Streamline diffusion: the convective part of the SUPG residual, weighted by
+      // tau_k alpha_k rho_k (u_k*.grad v). tau_k includes the time, convection,
+      // viscous and drag rates, so it vanishes where drag dominates (the bed) and
+      // acts like upwinding in the freeboard. Symmetric, so the AMG keeps working
+      // (the full SUPG residual with its pressure and drag terms did not).
+      double tau[2] = {0, 0};
+      if (stabilized)
+      {
+        for (unsigned int k = 0; k < 2; ++k)
+        {
+          const double density = std::max (inertia[k], 1e-12);
+          const double nu      = viscosity[k] / density;
+          const double h_node  = 0.5 * h;
+          tau[k]               = 1.0 / std::sqrt (std::pow (2.0 * bdf.a0 / dt, 2) +
+                                    std::pow (2.0 * advecting[k].norm () / h_node, 2) +
+                                    std::pow (12.0 * nu / (h_node * h_node), 2) +
+                                    std::pow (beta / density, 2));
+        }
+      }
+
+      for (unsigned int i = 0; i < n_dofs; ++i)
+      {
+        const unsigned int ci = component[i];
+        if (ci < 2 * dim)
+        {
+          const unsigned int k = ci / dim, d = ci % dim;
+          const double       supg = tau[k] * inertia[k] * (advecting[k] * grad_phi[i]);
+          cell_rhs (i) += force[k][d] * phi[i] * JxW;
+          if (k == 1)
+            cell_rhs (i) += stress.pressure * grad_phi[i][d] * JxW;
+          for (unsigned int j = 0; j < n_dofs; ++j)
+          {
+            const unsigned int cj    = component[j];
+            double             value = 0;
+            if (cj < 2 * dim)
+            {
+              const unsigned int l = cj / dim, e = cj % dim;
+              if (k == l)
+              {
+                if (d == e)
+                  value += (mass[k] + beta) * phi[i] * phi[j] +
+                           inertia[k] * (advecting[k] * grad_phi[j]) * phi[i] +
+                           viscosity[k] * (grad_phi[i] * grad_phi[j]);
+                value += viscosity[k] * grad_phi[j][d] * grad_phi[i][e] +
+                         bulk[k] * grad_phi[j][e] * grad_phi[i][d];
+                if (d == e && supg != 0)
+                  value += supg * inertia[k] * (advecting[k] * grad_phi[j]);
+              }
+              else if (d == e)
+                value -= beta * phi[i] * phi[j];
+            }
+            else // pressure trial: -(p', div(alpha_k v))
+              value -=
+                  phi[j] * (fraction[k] * grad_phi[i][d] + phi[i] * grad_fraction[k][d]);
+            cell_matrix (i, j) += value * JxW;
+          }
+        }
+        else
+        {
+          cell_rhs (i) -= volume_source * phi[i] * JxW;
+          for (unsigned int j = 0; j < n_dofs; ++j)
+          {
+            const unsigned int cj = component[j];
+            if (cj < 2 * dim)
+            {
+              const unsigned int l = cj / dim, e = cj % dim;
+              cell_matrix (i, j) -=
+                  phi[i] * (fraction[l] * grad_phi[j][e] + phi[j] * grad_fraction[l][e]) *
+                  JxW;
+            }
+            else
+              cell_schur (i, j) += mobility * (grad_phi[i] * grad_phi[j]) * JxW;
+          }
+        }
+      }
+    }
+
+    // boundary terms: solids partial slip on walls, verification tractions on the outlet
+    for (const auto &face : cell->face_iterators ())
+    {
+      if (!face->at_boundary ())
+        continue;
+      const auto id                 = face->boundary_id ();
+      const bool wall_friction_face = partial_slip && id == boundary_ids.wall;
+      const bool traction_face      = manufactured && id == boundary_ids.outlet;
+      const bool backflow_face      = stabilized && id == boundary_ids.outlet;
+      if (!wall_friction_face && !traction_face && !backflow_face)
+        continue;
+      face_values.reinit (cell, face);
+      std::vector<Tensor<1, dim>> ug_face (face_quadrature.size ());
+      face_values[gas].get_function_values (flow_solution, ug_face);
+      for (unsigned int q = 0; q < face_quadrature.size (); ++q)
+      {
+        const Tensor<1, dim> n   = face_values.normal_vector (q);
+        const double         JxW = face_values.JxW (q);
+        // directional do-nothing: gas flowing back in through the outlet is
+        // treated as inflow, rho_g |u_g.n|_- u_g.v (alpha_g ~ 1 in the freeboard)
+        const double backflow =
+            backflow_face ? rho_g * std::max (-(ug_face[q] * n), 0.0) : 0.0;
+        Tensor<1, dim> traction[2];
+        if (traction_face)
+        {
+          traction[0] = manufactured->gas_traction (face_values.quadrature_point (q), n);
+          traction[1] =
+              manufactured->solids_traction (face_values.quadrature_point (q), n);
+        }
+        for (unsigned int i = 0; i < n_dofs; ++i)
+        {
+          const unsigned int ci = component[i];
+          if (ci >= 2 * dim)
+            continue;
+          const unsigned int k = ci / dim, d = ci % dim;
+          const double       phi_i = face_values.shape_value (i, q);
+          if (traction_face)
+            cell_rhs (i) += traction[k][d] * phi_i * JxW;
+          if (backflow > 0 && k == 0)
+            for (unsigned int j = 0; j < n_dofs; ++j)
+              if (component[j] == ci)
+                cell_matrix (i, j) +=
+                    backflow * phi_i * face_values.shape_value (j, q) * JxW;
+          if (wall_friction_face && k == 1)
+            for (unsigned int j = 0; j < n_dofs; ++j)
+            {
+              const unsigned int cj = component[j];
+              if (cj < dim || cj >= 2 * dim)
+                continue;
+              const unsigned int e = cj % dim;
+              // C (P_t u).(P_t v) with P_t = I - n n
+              const double projector = (d == e ? 1.0 : 0.0) - n[d] * n[e];
+              cell_matrix (i, j) += wall_friction * projector * phi_i *
+                                    face_values.shape_value (j, q) * JxW;
+            }
+        }
+      }
+    }
+
+    cell->get_dof_indices (dofs);
+    flow_constraints.distribute_local_to_global (
+        cell_matrix, cell_rhs, dofs, flow_matrix, flow_rhs);
+    schur_constraints.distribute_local_to_global (cell_schur, dofs, schur_matrix);
+    ++alpha_cell;
+  }
+  flow_matrix.compress (VectorOperation::add);
+  schur_matrix.compress (VectorOperation::add);
+  flow_rhs.compress (VectorOperation::add);
+}
+
+template void TwoFluidSolver<2>::assemble_flow_system (const BDFCoefficients &, double);
+template void TwoFluidSolver<3>::assemble_flow_system (const BDFCoefficients &, double);
 } // namespace wetbed

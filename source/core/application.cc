@@ -11,79 +11,77 @@
 
 namespace wetbed
 {
-  namespace
-  {
-    void
-    print_usage (std::ostream &out)
-    {
-      out << "wetbed: two-fluid (Euler-Euler) simulation of gas-solid fluidized beds\n\n"
-             "usage:\n"
-             "  wetbed CASE.prm                run the case (mpirun -np N wetbed CASE.prm)\n"
-             "  wetbed --print-parameters      every parameter with default and documentation\n"
-             "  wetbed --help                  this text\n\n"
-             "Results go to `output/folder` of the case: parameters.prm, monitors.csv,\n"
-             "fields_*.pvtu. Exit status: 0 done, 1 usage, 2 bad input, 3 run failed.\n";
-    }
+namespace
+{
+void print_usage (std::ostream &out)
+{
+  out << "wetbed: two-fluid (Euler-Euler) simulation of gas-solid fluidized beds\n\n"
+         "usage:\n"
+         "  wetbed CASE.prm                run the case (mpirun -np N wetbed CASE.prm)\n"
+         "  wetbed --print-parameters      every parameter with default and "
+         "documentation\n"
+         "  wetbed --help                  this text\n\n"
+         "Results go to `output/folder` of the case: parameters.prm, monitors.csv,\n"
+         "fields_*.pvtu. Exit status: 0 done, 1 usage, 2 bad input, 3 run failed.\n";
+}
 
-    template <int dim>
-    void
-    run_case (const Parameters &parameters, const dealii::ParameterHandler &prm)
-    {
-      TwoFluidSolver<dim> solver (parameters, MPI_COMM_WORLD);
-      solver.initialize ();
-      if (dealii::Utilities::MPI::this_mpi_process (MPI_COMM_WORLD) == 0)
-        prm.print_parameters (parameters.output.folder + "/parameters.prm",
-                              dealii::ParameterHandler::PRM);
-      solver.run ();
-    }
-  } // namespace
+template <int dim>
+void run_case (const Parameters &parameters, const dealii::ParameterHandler &prm)
+{
+  TwoFluidSolver<dim> solver (parameters, MPI_COMM_WORLD);
+  solver.initialize ();
+  if (dealii::Utilities::MPI::this_mpi_process (MPI_COMM_WORLD) == 0)
+    prm.print_parameters (parameters.output.folder + "/parameters.prm",
+                          dealii::ParameterHandler::PRM);
+  solver.run ();
+}
+} // namespace
 
-  int
-  run_application (int argc, char **argv)
+int run_application (int argc, char **argv)
+{
+  const bool root = dealii::Utilities::MPI::this_mpi_process (MPI_COMM_WORLD) == 0;
+  if (argc != 2)
   {
-    const bool root = dealii::Utilities::MPI::this_mpi_process (MPI_COMM_WORLD) == 0;
-    if (argc != 2)
-      {
-        if (root)
-          print_usage (std::cerr);
-        return 1;
-      }
-    const std::string argument = argv[1];
-    if (argument == "--help" || argument == "-h")
-      {
-        if (root)
-          print_usage (std::cout);
-        return 0;
-      }
-    if (argument == "--print-parameters")
-      {
-        dealii::ParameterHandler prm;
-        Parameters::declare_parameters (prm);
-        if (root)
-          prm.print_parameters (std::cout, dealii::ParameterHandler::PRM);
-        return 0;
-      }
-    try
-      {
-        dealii::ParameterHandler prm;
-        const Parameters parameters = Parameters::read (argument, prm);
-        if (parameters.dimension == 2)
-          run_case<2> (parameters, prm);
-        else
-          run_case<3> (parameters, prm);
-      }
-    catch (const InputError &e)
-      {
-        if (root)
-          std::cerr << "wetbed: error: " << e.what () << std::endl;
-        return 2;
-      }
-    catch (const std::exception &e)
-      {
-        if (root)
-          std::cerr << "wetbed: run failed: " << e.what () << std::endl;
-        return 3;
-      }
+    if (root)
+      print_usage (std::cerr);
+    return 1;
+  }
+  const std::string argument = argv[1];
+  if (argument == "--help" || argument == "-h")
+  {
+    if (root)
+      print_usage (std::cout);
     return 0;
   }
+  if (argument == "--print-parameters")
+  {
+    dealii::ParameterHandler prm;
+    Parameters::declare_parameters (prm);
+    if (root)
+      prm.print_parameters (std::cout, dealii::ParameterHandler::PRM);
+    return 0;
+  }
+  try
+  {
+    dealii::ParameterHandler prm;
+    const Parameters         parameters = Parameters::read (argument, prm);
+    if (parameters.dimension == 2)
+      run_case<2> (parameters, prm);
+    else
+      run_case<3> (parameters, prm);
+  }
+  catch (const InputError &e)
+  {
+    if (root)
+      std::cerr << "wetbed: error: " << e.what () << std::endl;
+    return 2;
+  }
+  catch (const std::exception &e)
+  {
+    if (root)
+      std::cerr << "wetbed: run failed: " << e.what () << std::endl;
+    return 3;
+  }
+  return 0;
+}
 } // namespace wetbed

@@ -12,488 +12,498 @@
 
 namespace wetbed
 {
-  using dealii::ParameterHandler;
-  using dealii::Patterns::Bool;
-  using dealii::Patterns::Double;
-  using dealii::Patterns::FileName;
-  using dealii::Patterns::Integer;
-  using dealii::Patterns::Selection;
-  using dealii::Patterns::Anything;
+using dealii::ParameterHandler;
+using dealii::Patterns::Anything;
+using dealii::Patterns::Bool;
+using dealii::Patterns::Double;
+using dealii::Patterns::FileName;
+using dealii::Patterns::Integer;
+using dealii::Patterns::Selection;
 
-  namespace
+namespace
+{
+void require_positive (const double value, const std::string &where)
+{
+  require (value > 0.0, where, "must be > 0 (got " + std::to_string (value) + ")");
+}
+
+WallCondition wall_condition_from_string (const std::string &name)
+{
+  if (name == "no-slip")
+    return WallCondition::no_slip;
+  if (name == "free-slip")
+    return WallCondition::free_slip;
+  return WallCondition::partial_slip;
+}
+} // namespace
+
+void MeshParameters::declare_parameters (ParameterHandler &prm)
+{
+  prm.enter_subsection ("mesh");
+  prm.declare_entry ("file",
+                     "../meshes/column_2d.geo",
+                     Anything (),
+                     "gmsh geometry (.geo, meshed with the gmsh executable at start) or "
+                     "mesh (.msh). A relative path is taken relative to the .prm file.");
+  prm.declare_entry ("initial refinement",
+                     "1",
+                     Integer (0, 10),
+                     "Uniform refinements of the gmsh mesh after reading.");
+  prm.declare_entry (
+      "inlet", "inlet", Anything (), "Physical group name of the gas inlet.");
+  prm.declare_entry (
+      "outlet", "outlet", Anything (), "Physical group name of the outlet.");
+  prm.declare_entry ("wall", "wall", Anything (), "Physical group name of the walls.");
+  prm.declare_entry ("cylindrical wall",
+                     "false",
+                     Bool (),
+                     "Attach a cylindrical manifold (axis along gravity through the mesh "
+                     "centre) to the walls, for curved 3D columns.");
+  prm.declare_entry ("mapping degree",
+                     "2",
+                     Integer (1, 4),
+                     "Polynomial degree of the geometry mapping (2 for curved walls).");
+  prm.leave_subsection ();
+}
+
+void MeshParameters::parse_parameters (ParameterHandler &prm)
+{
+  prm.enter_subsection ("mesh");
+  file               = prm.get ("file");
+  initial_refinement = prm.get_integer ("initial refinement");
+  inlet_name         = prm.get ("inlet");
+  outlet_name        = prm.get ("outlet");
+  wall_name          = prm.get ("wall");
+  cylindrical_wall   = prm.get_bool ("cylindrical wall");
+  mapping_degree     = prm.get_integer ("mapping degree");
+  prm.leave_subsection ();
+  require (!file.empty (), "mesh/file", "is empty");
+}
+
+void PhysicalProperties::declare_parameters (ParameterHandler &prm)
+{
+  prm.enter_subsection ("physical properties");
+  prm.declare_entry ("gas density", "1.2", Double (), "rho_g (kg/m^3).");
+  prm.declare_entry ("gas viscosity", "1.8e-5", Double (), "mu_g (Pa s).");
+  prm.declare_entry ("particle density", "2500", Double (), "rho_s (kg/m^3).");
+  prm.declare_entry ("particle diameter", "350e-6", Double (), "d (m).");
+  prm.declare_entry ("maximum packing",
+                     "0.61",
+                     Double (),
+                     "alpha_max: the solids volume fraction never exceeds it.");
+  prm.declare_entry (
+      "gravity",
+      "0, -9.81, 0",
+      Anything (),
+      "Gravity vector (m/s^2), three comma-separated components; in 2D the "
+      "third is ignored.");
+  prm.leave_subsection ();
+}
+
+void PhysicalProperties::parse_parameters (ParameterHandler &prm)
+{
+  prm.enter_subsection ("physical properties");
+  gas_density              = prm.get_double ("gas density");
+  gas_viscosity            = prm.get_double ("gas viscosity");
+  particle_density         = prm.get_double ("particle density");
+  particle_diameter        = prm.get_double ("particle diameter");
+  maximum_packing          = prm.get_double ("maximum packing");
+  const std::string g_text = prm.get ("gravity");
+  prm.leave_subsection ();
+
+  require_positive (gas_density, "physical properties/gas density");
+  require_positive (gas_viscosity, "physical properties/gas viscosity");
+  require_positive (particle_density, "physical properties/particle density");
+  require_positive (particle_diameter, "physical properties/particle diameter");
+  require (particle_density > gas_density,
+           "physical properties/particle density",
+           "must exceed the gas density");
+  require (maximum_packing > 0.0 && maximum_packing < 1.0,
+           "physical properties/maximum packing",
+           "must lie in (0, 1)");
+  std::vector<std::string> parts = dealii::Utilities::split_string_list (g_text, ',');
+  require (parts.size () == 3,
+           "physical properties/gravity",
+           "needs three comma-separated numbers (got '" + g_text + "')");
+  for (unsigned int d = 0; d < 3; ++d)
   {
-    void
-    require_positive (const double value, const std::string &where)
+    try
     {
-      require (value > 0.0, where, "must be > 0 (got " + std::to_string (value) + ")");
+      std::size_t used = 0;
+      gravity[d]       = std::stod (parts[d], &used);
+      require (used == parts[d].size (), "physical properties/gravity", "bad number");
     }
-
-    WallCondition
-    wall_condition_from_string (const std::string &name)
+    catch (const std::logic_error &)
     {
-      if (name == "no-slip")
-        return WallCondition::no_slip;
-      if (name == "free-slip")
-        return WallCondition::free_slip;
-      return WallCondition::partial_slip;
+      throw InputError ("physical properties/gravity",
+                        "'" + parts[d] + "' is not a number");
     }
-  } // namespace
-
-  void
-  MeshParameters::declare_parameters (ParameterHandler &prm)
-  {
-    prm.enter_subsection ("mesh");
-    prm.declare_entry ("file",
-                       "../meshes/column_2d.geo",
-                       Anything (),
-                       "gmsh geometry (.geo, meshed with the gmsh executable at start) or "
-                       "mesh (.msh). A relative path is taken relative to the .prm file.");
-    prm.declare_entry ("initial refinement",
-                       "1",
-                       Integer (0, 10),
-                       "Uniform refinements of the gmsh mesh after reading.");
-    prm.declare_entry ("inlet", "inlet", Anything (), "Physical group name of the gas inlet.");
-    prm.declare_entry ("outlet", "outlet", Anything (), "Physical group name of the outlet.");
-    prm.declare_entry ("wall", "wall", Anything (), "Physical group name of the walls.");
-    prm.declare_entry ("cylindrical wall",
-                       "false",
-                       Bool (),
-                       "Attach a cylindrical manifold (axis along gravity through the mesh "
-                       "centre) to the walls, for curved 3D columns.");
-    prm.declare_entry ("mapping degree",
-                       "2",
-                       Integer (1, 4),
-                       "Polynomial degree of the geometry mapping (2 for curved walls).");
-    prm.leave_subsection ();
   }
+  require (gravity.norm () > 0.0, "physical properties/gravity", "must not be zero");
+}
 
-  void
-  MeshParameters::parse_parameters (ParameterHandler &prm)
-  {
-    prm.enter_subsection ("mesh");
-    file               = prm.get ("file");
-    initial_refinement = prm.get_integer ("initial refinement");
-    inlet_name         = prm.get ("inlet");
-    outlet_name        = prm.get ("outlet");
-    wall_name          = prm.get ("wall");
-    cylindrical_wall   = prm.get_bool ("cylindrical wall");
-    mapping_degree     = prm.get_integer ("mapping degree");
-    prm.leave_subsection ();
-    require (!file.empty (), "mesh/file", "is empty");
-  }
+void SolidsStressParameters::declare_parameters (ParameterHandler &prm)
+{
+  prm.enter_subsection ("solids stress");
+  prm.declare_entry ("model",
+                     "constant viscosity",
+                     Selection (closures::solids_stress_model_names ()),
+                     "Rheology of the particle phase.");
+  prm.declare_entry ("shear viscosity", "0.5", Double (), "mu_s (Pa s), constant model.");
+  prm.declare_entry ("frictional coefficient", "0.05", Double (), "Fr (Pa).");
+  prm.declare_entry (
+      "frictional exponent n", "2", Double (), "n in Fr(a-a_min)^n/(a_max-a)^p.");
+  prm.declare_entry (
+      "frictional exponent p", "3", Double (), "p in Fr(a-a_min)^n/(a_max-a)^p.");
+  prm.declare_entry ("frictional onset",
+                     "0.58",
+                     Double (),
+                     "alpha_fr,min: the frictional pressure is zero below it.");
+  prm.declare_entry ("minimum packing distance",
+                     "0.001",
+                     Double (),
+                     "Floor of (alpha_max - alpha) in the frictional pressure.");
+  prm.leave_subsection ();
+}
 
-  void
-  PhysicalProperties::declare_parameters (ParameterHandler &prm)
-  {
-    prm.enter_subsection ("physical properties");
-    prm.declare_entry ("gas density", "1.2", Double (), "rho_g (kg/m^3).");
-    prm.declare_entry ("gas viscosity", "1.8e-5", Double (), "mu_g (Pa s).");
-    prm.declare_entry ("particle density", "2500", Double (), "rho_s (kg/m^3).");
-    prm.declare_entry ("particle diameter", "350e-6", Double (), "d (m).");
-    prm.declare_entry ("maximum packing",
-                       "0.61",
-                       Double (),
-                       "alpha_max: the solids volume fraction never exceeds it.");
-    prm.declare_entry ("gravity",
-                       "0, -9.81, 0",
-                       Anything (),
-                       "Gravity vector (m/s^2), three comma-separated components; in 2D the "
-                       "third is ignored.");
-    prm.leave_subsection ();
-  }
-
-  void
-  PhysicalProperties::parse_parameters (ParameterHandler &prm)
-  {
-    prm.enter_subsection ("physical properties");
-    gas_density       = prm.get_double ("gas density");
-    gas_viscosity     = prm.get_double ("gas viscosity");
-    particle_density  = prm.get_double ("particle density");
-    particle_diameter = prm.get_double ("particle diameter");
-    maximum_packing   = prm.get_double ("maximum packing");
-    const std::string g_text = prm.get ("gravity");
-    prm.leave_subsection ();
-
-    require_positive (gas_density, "physical properties/gas density");
-    require_positive (gas_viscosity, "physical properties/gas viscosity");
-    require_positive (particle_density, "physical properties/particle density");
-    require_positive (particle_diameter, "physical properties/particle diameter");
-    require (particle_density > gas_density,
-             "physical properties/particle density",
-             "must exceed the gas density");
-    require (maximum_packing > 0.0 && maximum_packing < 1.0,
-             "physical properties/maximum packing",
-             "must lie in (0, 1)");
-    std::vector<std::string> parts = dealii::Utilities::split_string_list (g_text, ',');
-    require (parts.size () == 3,
-             "physical properties/gravity",
-             "needs three comma-separated numbers (got '" + g_text + "')");
-    for (unsigned int d = 0; d < 3; ++d)
-      {
-        try
-          {
-            std::size_t used = 0;
-            gravity[d]       = std::stod (parts[d], &used);
-            require (used == parts[d].size (), "physical properties/gravity", "bad number");
-          }
-        catch (const std::logic_error &)
-          {
-            throw InputError ("physical properties/gravity",
-                              "'" + parts[d] + "' is not a number");
-          }
-      }
-    require (gravity.norm () > 0.0, "physical properties/gravity", "must not be zero");
-  }
-
-  void
-  SolidsStressParameters::declare_parameters (ParameterHandler &prm)
-  {
-    prm.enter_subsection ("solids stress");
-    prm.declare_entry ("model",
-                       "constant viscosity",
-                       Selection (closures::solids_stress_model_names ()),
-                       "Rheology of the particle phase.");
-    prm.declare_entry ("shear viscosity", "0.5", Double (), "mu_s (Pa s), constant model.");
-    prm.declare_entry ("frictional coefficient", "0.05", Double (), "Fr (Pa).");
-    prm.declare_entry ("frictional exponent n", "2", Double (), "n in Fr(a-a_min)^n/(a_max-a)^p.");
-    prm.declare_entry ("frictional exponent p", "3", Double (), "p in Fr(a-a_min)^n/(a_max-a)^p.");
-    prm.declare_entry ("frictional onset",
-                       "0.58",
-                       Double (),
-                       "alpha_fr,min: the frictional pressure is zero below it.");
-    prm.declare_entry ("minimum packing distance",
-                       "0.001",
-                       Double (),
-                       "Floor of (alpha_max - alpha) in the frictional pressure.");
-    prm.leave_subsection ();
-  }
-
-  void
-  SolidsStressParameters::parse_parameters (ParameterHandler &prm, const double maximum_packing)
-  {
-    prm.enter_subsection ("solids stress");
-    model                    = prm.get ("model");
-    shear_viscosity          = prm.get_double ("shear viscosity");
-    frictional_coefficient   = prm.get_double ("frictional coefficient");
-    frictional_exponent_n    = prm.get_double ("frictional exponent n");
-    frictional_exponent_p    = prm.get_double ("frictional exponent p");
-    frictional_onset         = prm.get_double ("frictional onset");
-    minimum_packing_distance = prm.get_double ("minimum packing distance");
-    prm.leave_subsection ();
-    require_positive (shear_viscosity, "solids stress/shear viscosity");
-    require_positive (frictional_coefficient, "solids stress/frictional coefficient");
-    require (frictional_exponent_n >= 1.0, "solids stress/frictional exponent n", "must be >= 1");
-    require (frictional_exponent_p > 0.0, "solids stress/frictional exponent p", "must be > 0");
-    require (frictional_onset > 0.0 && frictional_onset < maximum_packing,
-             "solids stress/frictional onset",
-             "must lie in (0, physical properties/maximum packing)");
-    require (minimum_packing_distance > 0.0 &&
+void SolidsStressParameters::parse_parameters (ParameterHandler &prm,
+                                               const double      maximum_packing)
+{
+  prm.enter_subsection ("solids stress");
+  model                    = prm.get ("model");
+  shear_viscosity          = prm.get_double ("shear viscosity");
+  frictional_coefficient   = prm.get_double ("frictional coefficient");
+  frictional_exponent_n    = prm.get_double ("frictional exponent n");
+  frictional_exponent_p    = prm.get_double ("frictional exponent p");
+  frictional_onset         = prm.get_double ("frictional onset");
+  minimum_packing_distance = prm.get_double ("minimum packing distance");
+  prm.leave_subsection ();
+  require_positive (shear_viscosity, "solids stress/shear viscosity");
+  require_positive (frictional_coefficient, "solids stress/frictional coefficient");
+  require (frictional_exponent_n >= 1.0,
+           "solids stress/frictional exponent n",
+           "must be >= 1");
+  require (
+      frictional_exponent_p > 0.0, "solids stress/frictional exponent p", "must be > 0");
+  require (frictional_onset > 0.0 && frictional_onset < maximum_packing,
+           "solids stress/frictional onset",
+           "must lie in (0, physical properties/maximum packing)");
+  require (minimum_packing_distance > 0.0 &&
                minimum_packing_distance < maximum_packing - frictional_onset,
-             "solids stress/minimum packing distance",
-             "must lie in (0, maximum packing - frictional onset)");
-  }
+           "solids stress/minimum packing distance",
+           "must lie in (0, maximum packing - frictional onset)");
+}
 
-  void
-  BoundaryConditionParameters::declare_parameters (ParameterHandler &prm)
-  {
-    prm.enter_subsection ("boundary conditions");
-    prm.declare_entry ("inlet superficial velocity",
-                       "0.8",
-                       Anything (),
-                       "Superficial gas velocity U at the inlet (m/s), a function of t "
-                       "(muparser syntax, e.g. 'min(0.8, 0.2*t)').");
-    prm.declare_entry ("inlet solids fraction",
-                       "0",
-                       Double (0, 1),
-                       "alpha_s at the inlet; the gas enters at U/(1-alpha_s,in).");
-    prm.declare_entry ("gas wall condition",
-                       "no-slip",
-                       Selection ("no-slip|free-slip"),
-                       "Gas velocity condition on walls.");
-    prm.declare_entry ("solids wall condition",
-                       "free-slip",
-                       Selection ("no-slip|free-slip|partial-slip"),
-                       "Solids tangential condition on walls (no penetration always).");
-    prm.declare_entry ("solids wall friction",
-                       "0",
-                       Double (0),
-                       "Robin coefficient C (kg m^-2 s^-1) of the partial-slip traction "
-                       "-C u_slip.");
-    prm.declare_entry ("hold solids",
-                       "false",
-                       Bool (),
-                       "Hold u_s = 0 everywhere (a fixed bed, e.g. the Ergun test).");
-    prm.leave_subsection ();
-  }
+void BoundaryConditionParameters::declare_parameters (ParameterHandler &prm)
+{
+  prm.enter_subsection ("boundary conditions");
+  prm.declare_entry ("inlet superficial velocity",
+                     "0.8",
+                     Anything (),
+                     "Superficial gas velocity U at the inlet (m/s), a function of t "
+                     "(muparser syntax, e.g. 'min(0.8, 0.2*t)').");
+  prm.declare_entry ("inlet solids fraction",
+                     "0",
+                     Double (0, 1),
+                     "alpha_s at the inlet; the gas enters at U/(1-alpha_s,in).");
+  prm.declare_entry ("gas wall condition",
+                     "no-slip",
+                     Selection ("no-slip|free-slip"),
+                     "Gas velocity condition on walls.");
+  prm.declare_entry ("solids wall condition",
+                     "free-slip",
+                     Selection ("no-slip|free-slip|partial-slip"),
+                     "Solids tangential condition on walls (no penetration always).");
+  prm.declare_entry ("solids wall friction",
+                     "0",
+                     Double (0),
+                     "Robin coefficient C (kg m^-2 s^-1) of the partial-slip traction "
+                     "-C u_slip.");
+  prm.declare_entry ("hold solids",
+                     "false",
+                     Bool (),
+                     "Hold u_s = 0 everywhere (a fixed bed, e.g. the Ergun test).");
+  prm.leave_subsection ();
+}
 
-  void
-  BoundaryConditionParameters::parse_parameters (ParameterHandler &prm)
+void BoundaryConditionParameters::parse_parameters (ParameterHandler &prm)
+{
+  prm.enter_subsection ("boundary conditions");
+  inlet_superficial_velocity = prm.get ("inlet superficial velocity");
+  inlet_solids_fraction      = prm.get_double ("inlet solids fraction");
+  gas_wall             = wall_condition_from_string (prm.get ("gas wall condition"));
+  solids_wall          = wall_condition_from_string (prm.get ("solids wall condition"));
+  solids_wall_friction = prm.get_double ("solids wall friction");
+  hold_solids          = prm.get_bool ("hold solids");
+  prm.leave_subsection ();
+  try
   {
-    prm.enter_subsection ("boundary conditions");
-    inlet_superficial_velocity = prm.get ("inlet superficial velocity");
-    inlet_solids_fraction      = prm.get_double ("inlet solids fraction");
-    gas_wall                   = wall_condition_from_string (prm.get ("gas wall condition"));
-    solids_wall          = wall_condition_from_string (prm.get ("solids wall condition"));
-    solids_wall_friction = prm.get_double ("solids wall friction");
-    hold_solids          = prm.get_bool ("hold solids");
-    prm.leave_subsection ();
-    try
-      {
-        dealii::FunctionParser<1> f (1);
-        f.initialize ("t", inlet_superficial_velocity, {});
-        (void)f.value (dealii::Point<1> (0.0));
-      }
-    catch (...)
-      {
-        throw InputError ("boundary conditions/inlet superficial velocity",
-                          "'" + inlet_superficial_velocity +
-                            "' is not a valid expression in t");
-      }
-    require (solids_wall != WallCondition::partial_slip || solids_wall_friction > 0,
-             "boundary conditions/solids wall friction",
-             "must be > 0 for a partial-slip wall");
+    dealii::FunctionParser<1> f (1);
+    f.initialize ("t", inlet_superficial_velocity, {});
+    (void)f.value (dealii::Point<1> (0.0));
   }
-
-  void
-  InitialConditionParameters::declare_parameters (ParameterHandler &prm)
+  catch (...)
   {
-    prm.enter_subsection ("initial conditions");
-    prm.declare_entry ("bed height", "0.05", Double (), "Static bed height (m) above the inlet.");
-    prm.declare_entry ("bed solids fraction", "0.58", Double (), "alpha_s in the bed.");
-    prm.declare_entry ("freeboard solids fraction", "0", Double (), "alpha_s above the bed.");
-    prm.declare_entry ("gas at inlet velocity",
-                       "true",
-                       Bool (),
-                       "Start with the gas at U/alpha_g along the column (else at rest).");
-    prm.leave_subsection ();
+    throw InputError ("boundary conditions/inlet superficial velocity",
+                      "'" + inlet_superficial_velocity +
+                          "' is not a valid expression in t");
   }
+  require (solids_wall != WallCondition::partial_slip || solids_wall_friction > 0,
+           "boundary conditions/solids wall friction",
+           "must be > 0 for a partial-slip wall");
+}
 
-  void
-  InitialConditionParameters::parse_parameters (ParameterHandler &prm,
-                                                const double      maximum_packing)
+void InitialConditionParameters::declare_parameters (ParameterHandler &prm)
+{
+  prm.enter_subsection ("initial conditions");
+  prm.declare_entry (
+      "bed height", "0.05", Double (), "Static bed height (m) above the inlet.");
+  prm.declare_entry ("bed solids fraction", "0.58", Double (), "alpha_s in the bed.");
+  prm.declare_entry (
+      "freeboard solids fraction", "0", Double (), "alpha_s above the bed.");
+  prm.declare_entry ("gas at inlet velocity",
+                     "true",
+                     Bool (),
+                     "Start with the gas at U/alpha_g along the column (else at rest).");
+  prm.leave_subsection ();
+}
+
+void InitialConditionParameters::parse_parameters (ParameterHandler &prm,
+                                                   const double      maximum_packing)
+{
+  prm.enter_subsection ("initial conditions");
+  bed_height                = prm.get_double ("bed height");
+  bed_solids_fraction       = prm.get_double ("bed solids fraction");
+  freeboard_solids_fraction = prm.get_double ("freeboard solids fraction");
+  gas_at_inlet_velocity     = prm.get_bool ("gas at inlet velocity");
+  prm.leave_subsection ();
+  require (bed_height >= 0.0, "initial conditions/bed height", "must be >= 0");
+  require (bed_solids_fraction >= 0.0 && bed_solids_fraction <= maximum_packing,
+           "initial conditions/bed solids fraction",
+           "must lie in [0, physical properties/maximum packing]");
+  require (freeboard_solids_fraction >= 0.0 &&
+               freeboard_solids_fraction <= maximum_packing,
+           "initial conditions/freeboard solids fraction",
+           "must lie in [0, physical properties/maximum packing]");
+}
+
+void TimeSteppingParameters::declare_parameters (ParameterHandler &prm)
+{
+  prm.enter_subsection ("time stepping");
+  prm.declare_entry ("end time", "2", Double (), "Simulated time to reach (s).");
+  prm.declare_entry ("initial time step", "1e-4", Double (), "First time step (s).");
+  prm.declare_entry (
+      "maximum time step", "2e-3", Double (), "Upper limit of the step (s).");
+  prm.declare_entry ("minimum time step",
+                     "1e-7",
+                     Double (),
+                     "Below this a rejected step stops the run (s).");
+  prm.declare_entry (
+      "cfl target",
+      "0.5",
+      Double (),
+      "Target Courant number of the phase velocities per Q2 node spacing.");
+  prm.declare_entry ("transport cfl",
+                     "0.4",
+                     Double (),
+                     "Courant number of each explicit alpha_s sub-step (<= 1).");
+  prm.declare_entry ("growth factor", "1.2", Double (), "Largest growth of the step.");
+  prm.declare_entry (
+      "bdf order", "2", Integer (1, 2), "1: backward Euler, 2: variable BDF2.");
+  prm.declare_entry ("outer iterations",
+                     "2",
+                     Integer (1, 50),
+                     "Transport/momentum iterations per time step.");
+  prm.declare_entry ("adaptive", "true", Bool (), "Adapt the step to the CFL target.");
+  prm.leave_subsection ();
+}
+
+void TimeSteppingParameters::parse_parameters (ParameterHandler &prm)
+{
+  prm.enter_subsection ("time stepping");
+  end_time          = prm.get_double ("end time");
+  initial_time_step = prm.get_double ("initial time step");
+  maximum_time_step = prm.get_double ("maximum time step");
+  minimum_time_step = prm.get_double ("minimum time step");
+  cfl_target        = prm.get_double ("cfl target");
+  transport_cfl     = prm.get_double ("transport cfl");
+  growth_factor     = prm.get_double ("growth factor");
+  bdf_order         = prm.get_integer ("bdf order");
+  outer_iterations  = prm.get_integer ("outer iterations");
+  adaptive          = prm.get_bool ("adaptive");
+  prm.leave_subsection ();
+  require_positive (end_time, "time stepping/end time");
+  require_positive (initial_time_step, "time stepping/initial time step");
+  require_positive (maximum_time_step, "time stepping/maximum time step");
+  require_positive (minimum_time_step, "time stepping/minimum time step");
+  require (minimum_time_step <= initial_time_step &&
+               initial_time_step <= maximum_time_step,
+           "time stepping/initial time step",
+           "must lie in [minimum time step, maximum time step]");
+  require_positive (cfl_target, "time stepping/cfl target");
+  require (transport_cfl > 0.0 && transport_cfl <= 1.0,
+           "time stepping/transport cfl",
+           "must lie in (0, 1]");
+  require (growth_factor >= 1.0, "time stepping/growth factor", "must be >= 1");
+}
+
+void LinearSolverParameters::declare_parameters (ParameterHandler &prm)
+{
+  prm.enter_subsection ("linear solver");
+  prm.declare_entry (
+      "relative tolerance", "1e-8", Double (), "FGMRES stop: |r| <= tol |b|.");
+  prm.declare_entry ("scalar tolerance",
+                     "1e-12",
+                     Double (),
+                     "Relative tolerance of the scalar (alpha correction) solves.");
+  prm.declare_entry ("maximum iterations", "300", Integer (1), "FGMRES iteration limit.");
+  prm.declare_entry ("restart", "100", Integer (1), "FGMRES restart length.");
+  prm.declare_entry ("velocity smoother",
+                     "Chebyshev",
+                     Selection ("Chebyshev|ILU"),
+                     "ML smoother on the two-velocity block.");
+  prm.declare_entry ("smoother sweeps", "2", Integer (1, 10), "ML smoother sweeps.");
+  prm.declare_entry (
+      "aggregation threshold", "1e-4", Double (0, 1), "ML aggregation threshold.");
+  prm.declare_entry ("rebuild growth",
+                     "1.3",
+                     Double (1),
+                     "Rebuild the velocity AMG when Krylov iterations exceed this factor "
+                     "times those right after the last rebuild.");
+  prm.declare_entry ("rebuild interval",
+                     "20",
+                     Integer (1),
+                     "Rebuild the velocity AMG at least every this many linear solves.");
+  prm.declare_entry ("verbose", "false", Bool (), "Print every linear solve.");
+  prm.leave_subsection ();
+}
+
+void LinearSolverParameters::parse_parameters (ParameterHandler &prm)
+{
+  prm.enter_subsection ("linear solver");
+  relative_tolerance    = prm.get_double ("relative tolerance");
+  scalar_tolerance      = prm.get_double ("scalar tolerance");
+  maximum_iterations    = prm.get_integer ("maximum iterations");
+  restart               = prm.get_integer ("restart");
+  smoother              = prm.get ("velocity smoother");
+  smoother_sweeps       = prm.get_integer ("smoother sweeps");
+  aggregation_threshold = prm.get_double ("aggregation threshold");
+  rebuild_growth        = prm.get_double ("rebuild growth");
+  rebuild_interval      = prm.get_integer ("rebuild interval");
+  verbose               = prm.get_bool ("verbose");
+  prm.leave_subsection ();
+  require (relative_tolerance > 0 && relative_tolerance < 1,
+           "linear solver/relative tolerance",
+           "must lie in (0, 1)");
+  require (scalar_tolerance > 0 && scalar_tolerance < 1,
+           "linear solver/scalar tolerance",
+           "must lie in (0, 1)");
+}
+
+void OutputParameters::declare_parameters (ParameterHandler &prm)
+{
+  prm.enter_subsection ("output");
+  prm.declare_entry (
+      "folder", "output", Anything (), "Output folder (created if missing).");
+  prm.declare_entry ("field interval",
+                     "0.05",
+                     Double (0),
+                     "Simulated seconds between field outputs (0: first and last only).");
+  prm.declare_entry (
+      "monitor interval", "1", Integer (1), "Steps between monitors.csv rows.");
+  prm.declare_entry (
+      "progress interval", "20", Integer (1), "Steps between progress lines.");
+  prm.leave_subsection ();
+}
+
+void OutputParameters::parse_parameters (ParameterHandler &prm)
+{
+  prm.enter_subsection ("output");
+  folder            = prm.get ("folder");
+  field_interval    = prm.get_double ("field interval");
+  monitor_interval  = prm.get_integer ("monitor interval");
+  progress_interval = prm.get_integer ("progress interval");
+  prm.leave_subsection ();
+  require (!folder.empty (), "output/folder", "is empty");
+}
+
+void Parameters::declare_parameters (ParameterHandler &prm)
+{
+  prm.declare_entry ("dimension", "2", Integer (2, 3), "Spatial dimension (2 or 3).");
+  MeshParameters::declare_parameters (prm);
+  PhysicalProperties::declare_parameters (prm);
+  prm.enter_subsection ("drag");
+  prm.declare_entry ("model",
+                     "Syamlal-O'Brien",
+                     Selection (closures::drag_model_names ()),
+                     "Gas-solid drag law.");
+  prm.leave_subsection ();
+  SolidsStressParameters::declare_parameters (prm);
+  prm.enter_subsection ("stabilization");
+  prm.declare_entry ("enabled",
+                     "true",
+                     Bool (),
+                     "SUPG on both momentum equations (tau includes the drag rate) and "
+                     "backflow stabilization on the outlet. Off only for verification.");
+  prm.leave_subsection ();
+  BoundaryConditionParameters::declare_parameters (prm);
+  InitialConditionParameters::declare_parameters (prm);
+  TimeSteppingParameters::declare_parameters (prm);
+  LinearSolverParameters::declare_parameters (prm);
+  OutputParameters::declare_parameters (prm);
+}
+
+void Parameters::parse_parameters (ParameterHandler &prm)
+{
+  dimension = prm.get_integer ("dimension");
+  mesh.parse_parameters (prm);
+  physical.parse_parameters (prm);
+  prm.enter_subsection ("drag");
+  drag_model = prm.get ("model");
+  prm.leave_subsection ();
+  solids_stress.parse_parameters (prm, physical.maximum_packing);
+  prm.enter_subsection ("stabilization");
+  stabilization = prm.get_bool ("enabled");
+  prm.leave_subsection ();
+  boundary.parse_parameters (prm);
+  initial.parse_parameters (prm, physical.maximum_packing);
+  time.parse_parameters (prm);
+  linear_solver.parse_parameters (prm);
+  output.parse_parameters (prm);
+}
+
+unsigned int Parameters::read_dimension (const std::string &filename)
+{
+  ParameterHandler prm;
+  prm.declare_entry ("dimension", "2", Integer (2, 3), "");
+  prm.parse_input (filename, "", true);
+  return prm.get_integer ("dimension");
+}
+
+Parameters Parameters::read (const std::string &filename, ParameterHandler &prm)
+{
+  require (
+      std::filesystem::is_regular_file (filename), filename, "parameter file not found");
+  declare_parameters (prm);
+  try
   {
-    prm.enter_subsection ("initial conditions");
-    bed_height                = prm.get_double ("bed height");
-    bed_solids_fraction       = prm.get_double ("bed solids fraction");
-    freeboard_solids_fraction = prm.get_double ("freeboard solids fraction");
-    gas_at_inlet_velocity     = prm.get_bool ("gas at inlet velocity");
-    prm.leave_subsection ();
-    require (bed_height >= 0.0, "initial conditions/bed height", "must be >= 0");
-    require (bed_solids_fraction >= 0.0 && bed_solids_fraction <= maximum_packing,
-             "initial conditions/bed solids fraction",
-             "must lie in [0, physical properties/maximum packing]");
-    require (freeboard_solids_fraction >= 0.0 && freeboard_solids_fraction <= maximum_packing,
-             "initial conditions/freeboard solids fraction",
-             "must lie in [0, physical properties/maximum packing]");
+    prm.parse_input (filename);
   }
-
-  void
-  TimeSteppingParameters::declare_parameters (ParameterHandler &prm)
+  catch (const dealii::ExceptionBase &e)
   {
-    prm.enter_subsection ("time stepping");
-    prm.declare_entry ("end time", "2", Double (), "Simulated time to reach (s).");
-    prm.declare_entry ("initial time step", "1e-4", Double (), "First time step (s).");
-    prm.declare_entry ("maximum time step", "2e-3", Double (), "Upper limit of the step (s).");
-    prm.declare_entry ("minimum time step",
-                       "1e-7",
-                       Double (),
-                       "Below this a rejected step stops the run (s).");
-    prm.declare_entry ("cfl target",
-                       "0.5",
-                       Double (),
-                       "Target Courant number of the phase velocities per Q2 node spacing.");
-    prm.declare_entry ("transport cfl",
-                       "0.4",
-                       Double (),
-                       "Courant number of each explicit alpha_s sub-step (<= 1).");
-    prm.declare_entry ("growth factor", "1.2", Double (), "Largest growth of the step.");
-    prm.declare_entry ("bdf order", "2", Integer (1, 2), "1: backward Euler, 2: variable BDF2.");
-    prm.declare_entry ("outer iterations",
-                       "2",
-                       Integer (1, 50),
-                       "Transport/momentum iterations per time step.");
-    prm.declare_entry ("adaptive", "true", Bool (), "Adapt the step to the CFL target.");
-    prm.leave_subsection ();
+    std::ostringstream message;
+    e.print_info (message);
+    std::string text = message.str ();
+    // keep the message on one line
+    for (char &c : text)
+      if (c == '\n')
+        c = ' ';
+    throw InputError (filename, "cannot be parsed:" + text);
   }
-
-  void
-  TimeSteppingParameters::parse_parameters (ParameterHandler &prm)
-  {
-    prm.enter_subsection ("time stepping");
-    end_time          = prm.get_double ("end time");
-    initial_time_step = prm.get_double ("initial time step");
-    maximum_time_step = prm.get_double ("maximum time step");
-    minimum_time_step = prm.get_double ("minimum time step");
-    cfl_target        = prm.get_double ("cfl target");
-    transport_cfl     = prm.get_double ("transport cfl");
-    growth_factor     = prm.get_double ("growth factor");
-    bdf_order         = prm.get_integer ("bdf order");
-    outer_iterations  = prm.get_integer ("outer iterations");
-    adaptive          = prm.get_bool ("adaptive");
-    prm.leave_subsection ();
-    require_positive (end_time, "time stepping/end time");
-    require_positive (initial_time_step, "time stepping/initial time step");
-    require_positive (maximum_time_step, "time stepping/maximum time step");
-    require_positive (minimum_time_step, "time stepping/minimum time step");
-    require (minimum_time_step <= initial_time_step && initial_time_step <= maximum_time_step,
-             "time stepping/initial time step",
-             "must lie in [minimum time step, maximum time step]");
-    require_positive (cfl_target, "time stepping/cfl target");
-    require (transport_cfl > 0.0 && transport_cfl <= 1.0,
-             "time stepping/transport cfl",
-             "must lie in (0, 1]");
-    require (growth_factor >= 1.0, "time stepping/growth factor", "must be >= 1");
-  }
-
-  void
-  LinearSolverParameters::declare_parameters (ParameterHandler &prm)
-  {
-    prm.enter_subsection ("linear solver");
-    prm.declare_entry ("relative tolerance", "1e-8", Double (), "FGMRES stop: |r| <= tol |b|.");
-    prm.declare_entry ("scalar tolerance",
-                       "1e-12",
-                       Double (),
-                       "Relative tolerance of the scalar (alpha correction) solves.");
-    prm.declare_entry ("maximum iterations", "300", Integer (1), "FGMRES iteration limit.");
-    prm.declare_entry ("restart", "100", Integer (1), "FGMRES restart length.");
-    prm.declare_entry ("velocity smoother",
-                       "Chebyshev",
-                       Selection ("Chebyshev|ILU"),
-                       "ML smoother on the two-velocity block.");
-    prm.declare_entry ("smoother sweeps", "2", Integer (1, 10), "ML smoother sweeps.");
-    prm.declare_entry ("aggregation threshold", "1e-4", Double (0, 1), "ML aggregation threshold.");
-    prm.declare_entry ("rebuild growth",
-                       "1.3",
-                       Double (1),
-                       "Rebuild the velocity AMG when Krylov iterations exceed this factor "
-                       "times those right after the last rebuild.");
-    prm.declare_entry ("rebuild interval",
-                       "20",
-                       Integer (1),
-                       "Rebuild the velocity AMG at least every this many linear solves.");
-    prm.declare_entry ("verbose", "false", Bool (), "Print every linear solve.");
-    prm.leave_subsection ();
-  }
-
-  void
-  LinearSolverParameters::parse_parameters (ParameterHandler &prm)
-  {
-    prm.enter_subsection ("linear solver");
-    relative_tolerance    = prm.get_double ("relative tolerance");
-    scalar_tolerance      = prm.get_double ("scalar tolerance");
-    maximum_iterations    = prm.get_integer ("maximum iterations");
-    restart               = prm.get_integer ("restart");
-    smoother              = prm.get ("velocity smoother");
-    smoother_sweeps       = prm.get_integer ("smoother sweeps");
-    aggregation_threshold = prm.get_double ("aggregation threshold");
-    rebuild_growth        = prm.get_double ("rebuild growth");
-    rebuild_interval      = prm.get_integer ("rebuild interval");
-    verbose               = prm.get_bool ("verbose");
-    prm.leave_subsection ();
-    require (relative_tolerance > 0 && relative_tolerance < 1,
-             "linear solver/relative tolerance",
-             "must lie in (0, 1)");
-    require (scalar_tolerance > 0 && scalar_tolerance < 1,
-             "linear solver/scalar tolerance",
-             "must lie in (0, 1)");
-  }
-
-  void
-  OutputParameters::declare_parameters (ParameterHandler &prm)
-  {
-    prm.enter_subsection ("output");
-    prm.declare_entry ("folder", "output", Anything (), "Output folder (created if missing).");
-    prm.declare_entry ("field interval",
-                       "0.05",
-                       Double (0),
-                       "Simulated seconds between field outputs (0: first and last only).");
-    prm.declare_entry ("monitor interval", "1", Integer (1), "Steps between monitors.csv rows.");
-    prm.declare_entry ("progress interval", "20", Integer (1), "Steps between progress lines.");
-    prm.leave_subsection ();
-  }
-
-  void
-  OutputParameters::parse_parameters (ParameterHandler &prm)
-  {
-    prm.enter_subsection ("output");
-    folder            = prm.get ("folder");
-    field_interval    = prm.get_double ("field interval");
-    monitor_interval  = prm.get_integer ("monitor interval");
-    progress_interval = prm.get_integer ("progress interval");
-    prm.leave_subsection ();
-    require (!folder.empty (), "output/folder", "is empty");
-  }
-
-  void
-  Parameters::declare_parameters (ParameterHandler &prm)
-  {
-    prm.declare_entry ("dimension", "2", Integer (2, 3), "Spatial dimension (2 or 3).");
-    MeshParameters::declare_parameters (prm);
-    PhysicalProperties::declare_parameters (prm);
-    prm.enter_subsection ("drag");
-    prm.declare_entry ("model",
-                       "Syamlal-O'Brien",
-                       Selection (closures::drag_model_names ()),
-                       "Gas-solid drag law.");
-    prm.leave_subsection ();
-    SolidsStressParameters::declare_parameters (prm);
-    BoundaryConditionParameters::declare_parameters (prm);
-    InitialConditionParameters::declare_parameters (prm);
-    TimeSteppingParameters::declare_parameters (prm);
-    LinearSolverParameters::declare_parameters (prm);
-    OutputParameters::declare_parameters (prm);
-  }
-
-  void
-  Parameters::parse_parameters (ParameterHandler &prm)
-  {
-    dimension = prm.get_integer ("dimension");
-    mesh.parse_parameters (prm);
-    physical.parse_parameters (prm);
-    prm.enter_subsection ("drag");
-    drag_model = prm.get ("model");
-    prm.leave_subsection ();
-    solids_stress.parse_parameters (prm, physical.maximum_packing);
-    boundary.parse_parameters (prm);
-    initial.parse_parameters (prm, physical.maximum_packing);
-    time.parse_parameters (prm);
-    linear_solver.parse_parameters (prm);
-    output.parse_parameters (prm);
-  }
-
-  unsigned int
-  Parameters::read_dimension (const std::string &filename)
-  {
-    ParameterHandler prm;
-    prm.declare_entry ("dimension", "2", Integer (2, 3), "");
-    prm.parse_input (filename, "", true);
-    return prm.get_integer ("dimension");
-  }
-
-  Parameters
-  Parameters::read (const std::string &filename, ParameterHandler &prm)
-  {
-    require (std::filesystem::is_regular_file (filename), filename, "parameter file not found");
-    declare_parameters (prm);
-    try
-      {
-        prm.parse_input (filename);
-      }
-    catch (const dealii::ExceptionBase &e)
-      {
-        std::ostringstream message;
-        e.print_info (message);
-        std::string text = message.str ();
-        // keep the message on one line
-        for (char &c : text)
-          if (c == '\n')
-            c = ' ';
-        throw InputError (filename, "cannot be parsed:" + text);
-      }
-    Parameters parameters;
-    parameters.parse_parameters (prm);
-    parameters.parameter_file_directory =
+  Parameters parameters;
+  parameters.parse_parameters (prm);
+  parameters.parameter_file_directory =
       std::filesystem::absolute (filename).parent_path ().string ();
-    return parameters;
-  }
+  return parameters;
+}
 } // namespace wetbed

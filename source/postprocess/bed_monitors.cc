@@ -6,137 +6,141 @@
 
 namespace wetbed
 {
-  using namespace dealii;
+using namespace dealii;
 
-  /**
-   * Monitors of the bed after a step: pressure drop (mean p' over the inlet minus the
-   * mean over the outlet), fluidization index FI = dP A / ((M_s (1 - rho_g/rho_s)) |g|)
-   * (p' excludes the gas hydrostatic part, so the bed weight is taken net of buoyancy),
-   * solids mass and drift, bounds, peak speeds and the bed height (95% of the solids
-   * below it).
-   */
-  template <int dim>
-  MonitorRow
-  TwoFluidSolver<dim>::evaluate_monitors () const
-  {
-    MonitorRow row;
-    row.step      = step_number;
-    row.time      = time;
-    row.time_step = previous_time_step;
-    row.krylov    = last_krylov_iterations;
-    row.rejected  = rejected_steps;
+/**
+ * Monitors of the bed after a step: pressure drop (mean p' over the inlet minus the
+ * mean over the outlet), fluidization index FI = dP A / ((M_s (1 - rho_g/rho_s)) |g|)
+ * (p' excludes the gas hydrostatic part, so the bed weight is taken net of buoyancy),
+ * solids mass and drift, bounds, peak speeds and the bed height (95% of the solids
+ * below it).
+ */
+template <int dim>
+MonitorRow TwoFluidSolver<dim>::evaluate_monitors () const
+{
+  MonitorRow row;
+  row.step      = step_number;
+  row.time      = time;
+  row.time_step = previous_time_step;
+  row.krylov    = last_krylov_iterations;
+  row.rejected  = rejected_steps;
 
-    const QGauss<dim - 1> face_quadrature (3);
-    FEFaceValues<dim>     face_values (mapping,
-                                   flow_fe,
-                                   face_quadrature,
-                                   update_values | update_JxW_values);
-    const FEValuesExtractors::Scalar pressure (2 * dim);
-    std::vector<double>              p (face_quadrature.size ());
-    double inlet_integral = 0, inlet_area = 0, outlet_integral = 0, outlet_area = 0;
-    for (const auto &cell : flow_dof_handler.active_cell_iterators ())
-      if (cell->is_locally_owned ())
-        for (const auto &face : cell->face_iterators ())
-          if (face->at_boundary () &&
-              (face->boundary_id () == boundary_ids.inlet || face->boundary_id () == boundary_ids.outlet))
-            {
-              face_values.reinit (cell, face);
-              face_values[pressure].get_function_values (flow_solution, p);
-              const bool inlet = face->boundary_id () == boundary_ids.inlet;
-              for (unsigned int q = 0; q < face_quadrature.size (); ++q)
-                {
-                  (inlet ? inlet_integral : outlet_integral) += p[q] * face_values.JxW (q);
-                  (inlet ? inlet_area : outlet_area) += face_values.JxW (q);
-                }
-            }
-    inlet_integral  = Utilities::MPI::sum (inlet_integral, communicator);
-    inlet_area      = Utilities::MPI::sum (inlet_area, communicator);
-    outlet_integral = Utilities::MPI::sum (outlet_integral, communicator);
-    outlet_area     = Utilities::MPI::sum (outlet_area, communicator);
-    row.pressure_drop = inlet_integral / inlet_area - outlet_integral / outlet_area;
-
-    const auto &pp       = parameters.physical;
-    row.solids_mass      = solids_mass (alpha);
-    row.mass_drift       = initial_solids_mass > 0 ? row.solids_mass / initial_solids_mass - 1 : 0;
-    const double weight  = row.solids_mass * (1 - pp.gas_density / pp.particle_density) * pp.gravity.norm ();
-    row.fluidization     = weight > 0 ? row.pressure_drop * inlet_area / weight : 0;
-
-    double lo = std::numeric_limits<double>::max (), hi = -lo;
-    for (unsigned int i = 0; i < alpha.locally_owned_size (); ++i)
-      {
-        lo = std::min (lo, alpha.local_element (i));
-        hi = std::max (hi, alpha.local_element (i));
-      }
-    row.alpha_min = Utilities::MPI::min (lo, communicator);
-    row.alpha_max = Utilities::MPI::max (hi, communicator);
-
-    // peak speeds at the Q2 nodes
-    std::vector<types::global_dof_index> dofs (flow_fe.n_dofs_per_cell ());
-    double gas_speed = 0, solids_speed = 0;
-    for (const auto &cell : flow_dof_handler.active_cell_iterators ())
-      if (cell->is_locally_owned ())
+  const QGauss<dim - 1> face_quadrature (3);
+  FEFaceValues<dim>     face_values (
+      mapping, flow_fe, face_quadrature, update_values | update_JxW_values);
+  const FEValuesExtractors::Scalar pressure (2 * dim);
+  std::vector<double>              p (face_quadrature.size ());
+  double inlet_integral = 0, inlet_area = 0, outlet_integral = 0, outlet_area = 0;
+  for (const auto &cell : flow_dof_handler.active_cell_iterators ())
+    if (cell->is_locally_owned ())
+      for (const auto &face : cell->face_iterators ())
+        if (face->at_boundary () && (face->boundary_id () == boundary_ids.inlet ||
+                                     face->boundary_id () == boundary_ids.outlet))
         {
-          cell->get_dof_indices (dofs);
-          for (unsigned int node = 0; node < flow_fe.base_element (0).n_dofs_per_cell (); ++node)
-            {
-              double g2 = 0, s2 = 0;
-              for (unsigned int d = 0; d < dim; ++d)
-                {
-                  g2 += std::pow (flow_solution (dofs[flow_fe.component_to_system_index (d, node)]), 2);
-                  s2 += std::pow (flow_solution (dofs[flow_fe.component_to_system_index (dim + d, node)]), 2);
-                }
-              gas_speed    = std::max (gas_speed, std::sqrt (g2));
-              solids_speed = std::max (solids_speed, std::sqrt (s2));
-            }
-        }
-    row.gas_speed_max    = Utilities::MPI::max (gas_speed, communicator);
-    row.solids_speed_max = Utilities::MPI::max (solids_speed, communicator);
-
-    // bed height: 95% of the solids lie below it (nodal masses sorted by height)
-    Tensor<1, dim> up;
-    for (unsigned int d = 0; d < dim; ++d)
-      up[d] = -pp.gravity[d];
-    up /= up.norm ();
-    std::vector<std::pair<double, double>> height_mass;
-    const auto &mass = transport.lumped_mass ();
-    std::vector<types::global_dof_index> alpha_dofs (alpha_fe.n_dofs_per_cell ());
-    std::vector<bool> seen (alpha.locally_owned_size (), false);
-    for (const auto &cell : alpha_dof_handler.active_cell_iterators ())
-      if (cell->is_locally_owned ())
-        {
-          cell->get_dof_indices (alpha_dofs);
-          for (const unsigned int v : cell->vertex_indices ())
-            if (alpha.locally_owned_elements ().is_element (alpha_dofs[v]))
-              {
-                const unsigned int local = alpha.get_partitioner ()->global_to_local (alpha_dofs[v]);
-                if (seen[local])
-                  continue;
-                seen[local] = true;
-                height_mass.emplace_back (cell->vertex (v) * up,
-                                          mass.local_element (local) * alpha.local_element (local));
-              }
-        }
-    const auto all = Utilities::MPI::all_gather (communicator, height_mass);
-    std::vector<std::pair<double, double>> merged;
-    for (const auto &part : all)
-      merged.insert (merged.end (), part.begin (), part.end ());
-    std::sort (merged.begin (), merged.end ());
-    double total = 0;
-    for (const auto &hm : merged)
-      total += hm.second;
-    double running = 0;
-    for (const auto &hm : merged)
-      {
-        running += hm.second;
-        if (running >= 0.95 * total)
+          face_values.reinit (cell, face);
+          face_values[pressure].get_function_values (flow_solution, p);
+          const bool inlet = face->boundary_id () == boundary_ids.inlet;
+          for (unsigned int q = 0; q < face_quadrature.size (); ++q)
           {
-            row.bed_height = hm.first;
-            break;
+            (inlet ? inlet_integral : outlet_integral) += p[q] * face_values.JxW (q);
+            (inlet ? inlet_area : outlet_area) += face_values.JxW (q);
           }
-      }
-    return row;
-  }
+        }
+  inlet_integral    = Utilities::MPI::sum (inlet_integral, communicator);
+  inlet_area        = Utilities::MPI::sum (inlet_area, communicator);
+  outlet_integral   = Utilities::MPI::sum (outlet_integral, communicator);
+  outlet_area       = Utilities::MPI::sum (outlet_area, communicator);
+  row.pressure_drop = inlet_integral / inlet_area - outlet_integral / outlet_area;
 
-  template MonitorRow TwoFluidSolver<2>::evaluate_monitors () const;
-  template MonitorRow TwoFluidSolver<3>::evaluate_monitors () const;
+  const auto &pp  = parameters.physical;
+  row.solids_mass = solids_mass (alpha);
+  row.mass_drift =
+      initial_solids_mass > 0 ? row.solids_mass / initial_solids_mass - 1 : 0;
+  const double weight =
+      row.solids_mass * (1 - pp.gas_density / pp.particle_density) * pp.gravity.norm ();
+  row.fluidization = weight > 0 ? row.pressure_drop * inlet_area / weight : 0;
+
+  double lo = std::numeric_limits<double>::max (), hi = -lo;
+  for (unsigned int i = 0; i < alpha.locally_owned_size (); ++i)
+  {
+    lo = std::min (lo, alpha.local_element (i));
+    hi = std::max (hi, alpha.local_element (i));
+  }
+  row.alpha_min = Utilities::MPI::min (lo, communicator);
+  row.alpha_max = Utilities::MPI::max (hi, communicator);
+
+  // peak speeds at the Q2 nodes
+  std::vector<types::global_dof_index> dofs (flow_fe.n_dofs_per_cell ());
+  double                               gas_speed = 0, solids_speed = 0;
+  for (const auto &cell : flow_dof_handler.active_cell_iterators ())
+    if (cell->is_locally_owned ())
+    {
+      cell->get_dof_indices (dofs);
+      for (unsigned int node = 0; node < flow_fe.base_element (0).n_dofs_per_cell ();
+           ++node)
+      {
+        double g2 = 0, s2 = 0;
+        for (unsigned int d = 0; d < dim; ++d)
+        {
+          g2 += std::pow (
+              flow_solution (dofs[flow_fe.component_to_system_index (d, node)]), 2);
+          s2 += std::pow (
+              flow_solution (dofs[flow_fe.component_to_system_index (dim + d, node)]), 2);
+        }
+        gas_speed    = std::max (gas_speed, std::sqrt (g2));
+        solids_speed = std::max (solids_speed, std::sqrt (s2));
+      }
+    }
+  row.gas_speed_max    = Utilities::MPI::max (gas_speed, communicator);
+  row.solids_speed_max = Utilities::MPI::max (solids_speed, communicator);
+
+  // bed height: 95% of the solids lie below it (nodal masses sorted by height)
+  Tensor<1, dim> up;
+  for (unsigned int d = 0; d < dim; ++d)
+    up[d] = -pp.gravity[d];
+  up /= up.norm ();
+  std::vector<std::pair<double, double>> height_mass;
+  const auto                            &mass = transport.lumped_mass ();
+  std::vector<types::global_dof_index>   alpha_dofs (alpha_fe.n_dofs_per_cell ());
+  std::vector<bool>                      seen (alpha.locally_owned_size (), false);
+  for (const auto &cell : alpha_dof_handler.active_cell_iterators ())
+    if (cell->is_locally_owned ())
+    {
+      cell->get_dof_indices (alpha_dofs);
+      for (const unsigned int v : cell->vertex_indices ())
+        if (alpha.locally_owned_elements ().is_element (alpha_dofs[v]))
+        {
+          const unsigned int local =
+              alpha.get_partitioner ()->global_to_local (alpha_dofs[v]);
+          if (seen[local])
+            continue;
+          seen[local] = true;
+          height_mass.emplace_back (cell->vertex (v) * up,
+                                    mass.local_element (local) *
+                                        alpha.local_element (local));
+        }
+    }
+  const auto all = Utilities::MPI::all_gather (communicator, height_mass);
+  std::vector<std::pair<double, double>> merged;
+  for (const auto &part : all)
+    merged.insert (merged.end (), part.begin (), part.end ());
+  std::sort (merged.begin (), merged.end ());
+  double total = 0;
+  for (const auto &hm : merged)
+    total += hm.second;
+  double running = 0;
+  for (const auto &hm : merged)
+  {
+    running += hm.second;
+    if (running >= 0.95 * total)
+    {
+      row.bed_height = hm.first;
+      break;
+    }
+  }
+  return row;
+}
+
+template MonitorRow TwoFluidSolver<2>::evaluate_monitors () const;
+template MonitorRow TwoFluidSolver<3>::evaluate_monitors () const;
 } // namespace wetbed

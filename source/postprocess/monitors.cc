@@ -4,28 +4,26 @@
 
 namespace wetbed
 {
-  void
-  Monitors::open (const std::string &filename, const bool write)
-  {
-    if (!write)
-      return;
-    file.open (filename);
-    file << "step,time,time_step,krylov_iterations,rejected_steps,pressure_drop,"
-            "fluidization_index,solids_mass,solids_mass_drift,alpha_s_min,alpha_s_max,"
-            "gas_speed_max,solids_speed_max,bed_height\n";
-  }
+void Monitors::open (const std::string &filename, const bool write)
+{
+  if (!write)
+    return;
+  file.open (filename);
+  file << "step,time,time_step,krylov_iterations,rejected_steps,pressure_drop,"
+          "fluidization_index,solids_mass,solids_mass_drift,alpha_s_min,alpha_s_max,"
+          "gas_speed_max,solids_speed_max,bed_height\n";
+}
 
-  void
-  Monitors::add (const MonitorRow &r)
-  {
-    rows.push_back (r);
-    if (!file.is_open ())
-      return;
-    file << r.step << ',' << std::setprecision (10) << r.time << ',' << r.time_step << ','
-         << r.krylov << ',' << r.rejected << ',' << r.pressure_drop << ',' << r.fluidization
-         << ',' << std::setprecision (15) << r.solids_mass << ',' << r.mass_drift << ','
-         << std::setprecision (10) << r.alpha_min << ',' << r.alpha_max << ','
-         << r.gas_speed_max << ',' << r.solids_speed_max << ',' << r.bed_height << '\n';
-    file.flush ();
-  }
+void Monitors::add (const MonitorRow &r)
+{
+  rows.push_back (r);
+  if (!file.is_open ())
+    return;
+  file << r.step << ',' << std::setprecision (10) << r.time << ',' << r.time_step << ','
+       << r.krylov << ',' << r.rejected << ',' << r.pressure_drop << ',' << r.fluidization
+       << ',' << std::setprecision (15) << r.solids_mass << ',' << r.mass_drift << ','
+       << std::setprecision (10) << r.alpha_min << ',' << r.alpha_max << ','
+       << r.gas_speed_max << ',' << r.solids_speed_max << ',' << r.bed_height << '\n';
+  file.flush ();
+}
 } // namespace wetbed

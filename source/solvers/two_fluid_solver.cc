@@ -17,567 +17,577 @@
 
 namespace wetbed
 {
-  using namespace dealii;
+using namespace dealii;
 
-  namespace
+namespace
+{
+/** Constant vector function on `n_components`, nonzero only in [first, first+dim). */
+template <int dim>
+class PhaseVelocity : public Function<dim>
+{
+public:
+  PhaseVelocity (const unsigned int first, const Tensor<1, dim> &value)
+      : Function<dim> (2 * dim + 1), first (first), velocity (value)
   {
-    /** Constant vector function on `n_components`, nonzero only in [first, first+dim). */
-    template <int dim>
-    class PhaseVelocity : public Function<dim>
-    {
-    public:
-      PhaseVelocity (const unsigned int first, const Tensor<1, dim> &value)
-        : Function<dim> (2 * dim + 1)
-        , first (first)
-        , velocity (value)
-      {}
-      double
-      value (const Point<dim> &, const unsigned int component) const override
-      {
-        return (component >= first && component < first + dim) ? velocity[component - first] : 0.0;
-      }
+  }
+  double value (const Point<dim> &, const unsigned int component) const override
+  {
+    return (component >= first && component < first + dim) ? velocity[component - first]
+                                                           : 0.0;
+  }
 
-    private:
-      unsigned int   first;
-      Tensor<1, dim> velocity;
-    };
+private:
+  unsigned int   first;
+  Tensor<1, dim> velocity;
+};
 
-    /** The manufactured velocities as a flow-system function (for boundary values). */
-    template <int dim>
-    class ManufacturedFlow : public Function<dim>
-    {
-    public:
-      ManufacturedFlow (const ManufacturedSolution<dim> &m)
-        : Function<dim> (2 * dim + 1)
-        , m (m)
-      {}
-      double
-      value (const Point<dim> &x, const unsigned int c) const override
-      {
-        if (c < dim)
-          return m.gas_velocity (x)[c];
-        if (c < 2 * dim)
-          return m.solids_velocity (x)[c - dim];
-        return m.pressure (x);
-      }
+/** The manufactured velocities as a flow-system function (for boundary values). */
+template <int dim>
+class ManufacturedFlow : public Function<dim>
+{
+public:
+  ManufacturedFlow (const ManufacturedSolution<dim> &m)
+      : Function<dim> (2 * dim + 1), m (m)
+  {
+  }
+  double value (const Point<dim> &x, const unsigned int c) const override
+  {
+    if (c < dim)
+      return m.gas_velocity (x)[c];
+    if (c < 2 * dim)
+      return m.solids_velocity (x)[c - dim];
+    return m.pressure (x);
+  }
 
-    private:
-      const ManufacturedSolution<dim> &m;
-    };
-  } // namespace
+private:
+  const ManufacturedSolution<dim> &m;
+};
+} // namespace
 
-  template <int dim>
-  TwoFluidSolver<dim>::TwoFluidSolver (const Parameters &parameters, MPI_Comm communicator)
-    : parameters (parameters)
-    , communicator (communicator)
-    , pcout (std::cout, Utilities::MPI::this_mpi_process (communicator) == 0)
-    , timer (communicator, pcout, TimerOutput::never, TimerOutput::wall_times)
-    , triangulation (communicator,
+template <int dim>
+TwoFluidSolver<dim>::TwoFluidSolver (const Parameters &parameters, MPI_Comm communicator)
+    : parameters (parameters), communicator (communicator),
+      pcout (std::cout, Utilities::MPI::this_mpi_process (communicator) == 0),
+      timer (communicator, pcout, TimerOutput::never, TimerOutput::wall_times),
+      triangulation (communicator,
                      typename Triangulation<dim>::MeshSmoothing (
-                       Triangulation<dim>::smoothing_on_refinement |
-                       Triangulation<dim>::smoothing_on_coarsening))
-    , mapping (parameters.mesh.mapping_degree)
-    , flow_fe (FE_Q<dim> (2), 2 * dim, FE_Q<dim> (1), 1)
-    , flow_dof_handler (triangulation)
-    , alpha_fe (1)
-    , alpha_dof_handler (triangulation)
-    , drag (closures::create_drag_model (parameters.drag_model))
-    , solids_stress (
-        closures::create_solids_stress_model (parameters.solids_stress, parameters.physical))
-    , gas_particle{parameters.physical.gas_density,
+                         Triangulation<dim>::smoothing_on_refinement |
+                         Triangulation<dim>::smoothing_on_coarsening)),
+      mapping (parameters.mesh.mapping_degree),
+      flow_fe (FE_Q<dim> (2), 2 * dim, FE_Q<dim> (1), 1),
+      flow_dof_handler (triangulation), alpha_fe (1), alpha_dof_handler (triangulation),
+      drag (closures::create_drag_model (parameters.drag_model)),
+      solids_stress (closures::create_solids_stress_model (parameters.solids_stress,
+                                                           parameters.physical)),
+      gas_particle{parameters.physical.gas_density,
                    parameters.physical.gas_viscosity,
-                   parameters.physical.particle_diameter}
-    , time (0)
-    , time_step (parameters.time.initial_time_step)
-    , previous_time_step (0)
-    , step_number (0)
-    , rejected_steps (0)
-    , last_krylov_iterations (0)
-    , next_output_time (0)
-    , output_index (0)
-    , initial_solids_mass (0)
-    , min_node_spacing (0)
-  {
-    inlet_velocity_function.initialize ("t", parameters.boundary.inlet_superficial_velocity, {});
-  }
+                   parameters.physical.particle_diameter},
+      time (0), time_step (parameters.time.initial_time_step), previous_time_step (0),
+      step_number (0), rejected_steps (0), last_krylov_iterations (0),
+      next_output_time (0), output_index (0), initial_solids_mass (0),
+      min_node_spacing (0)
+{
+  inlet_velocity_function.initialize (
+      "t", parameters.boundary.inlet_superficial_velocity, {});
+}
 
-  template <int dim>
-  TwoFluidSolver<dim>::~TwoFluidSolver ()
-  {
-    flow_dof_handler.clear ();
-    alpha_dof_handler.clear ();
-  }
+template <int dim>
+TwoFluidSolver<dim>::~TwoFluidSolver ()
+{
+  flow_dof_handler.clear ();
+  alpha_dof_handler.clear ();
+}
 
-  template <int dim>
-  void
-  TwoFluidSolver<dim>::set_manufactured_solution (std::shared_ptr<const ManufacturedSolution<dim>> m)
-  {
-    manufactured = m;
-  }
+template <int dim>
+void TwoFluidSolver<dim>::set_manufactured_solution (
+    std::shared_ptr<const ManufacturedSolution<dim>> m)
+{
+  manufactured = m;
+}
 
-  template <int dim>
-  double
-  TwoFluidSolver<dim>::inlet_superficial_velocity (const double t) const
-  {
-    return inlet_velocity_function.value (Point<1> (t));
-  }
+template <int dim>
+double TwoFluidSolver<dim>::inlet_superficial_velocity (const double t) const
+{
+  return inlet_velocity_function.value (Point<1> (t));
+}
 
-  template <int dim>
-  void
-  TwoFluidSolver<dim>::initialize ()
+template <int dim>
+void TwoFluidSolver<dim>::initialize ()
+{
+  const std::string folder = parameters.output.folder;
+  if (Utilities::MPI::this_mpi_process (communicator) == 0)
   {
-    const std::string folder = parameters.output.folder;
-    if (Utilities::MPI::this_mpi_process (communicator) == 0)
-      {
-        std::error_code error;
-        std::filesystem::create_directories (folder, error);
-        require (!error && std::filesystem::is_directory (folder),
-                 "output/folder",
-                 "cannot create '" + folder + "'");
-        const std::string probe = folder + "/.wetbed-write-test";
-        std::ofstream     test (probe);
-        require (static_cast<bool> (test), "output/folder", "'" + folder + "' is not writable");
-        test.close ();
-        std::filesystem::remove (probe);
-      }
-    MPI_Barrier (communicator);
-    boundary_ids = read_mesh<dim> (parameters.mesh,
-                                   parameters.parameter_file_directory,
-                                   folder,
-                                   parameters.physical.gravity,
-                                   triangulation);
-    setup_dofs ();
-    set_initial_state ();
-    monitors.open (folder + "/monitors.csv",
-                   Utilities::MPI::this_mpi_process (communicator) == 0);
-    initialized = true;
+    std::error_code error;
+    std::filesystem::create_directories (folder, error);
+    require (!error && std::filesystem::is_directory (folder),
+             "output/folder",
+             "cannot create '" + folder + "'");
+    const std::string probe = folder + "/.wetbed-write-test";
+    std::ofstream     test (probe);
+    require (
+        static_cast<bool> (test), "output/folder", "'" + folder + "' is not writable");
+    test.close ();
+    std::filesystem::remove (probe);
   }
+  MPI_Barrier (communicator);
+  boundary_ids = read_mesh<dim> (parameters.mesh,
+                                 parameters.parameter_file_directory,
+                                 folder,
+                                 parameters.physical.gravity,
+                                 triangulation);
+  setup_dofs ();
+  set_initial_state ();
+  monitors.open (folder + "/monitors.csv",
+                 Utilities::MPI::this_mpi_process (communicator) == 0);
+  initialized = true;
+}
 
-  template <int dim>
-  void
-  TwoFluidSolver<dim>::setup_dofs ()
-  {
-    TimerOutput::Scope scope (timer, "setup");
-    flow_dof_handler.distribute_dofs (flow_fe);
-    std::vector<unsigned int> block_of_component (2 * dim + 1, 0);
-    block_of_component[2 * dim] = 1;
-    DoFRenumbering::component_wise (flow_dof_handler, block_of_component);
-    const std::vector<types::global_dof_index> dofs_per_block =
+template <int dim>
+void TwoFluidSolver<dim>::setup_dofs ()
+{
+  TimerOutput::Scope scope (timer, "setup");
+  flow_dof_handler.distribute_dofs (flow_fe);
+  std::vector<unsigned int> block_of_component (2 * dim + 1, 0);
+  block_of_component[2 * dim] = 1;
+  DoFRenumbering::component_wise (flow_dof_handler, block_of_component);
+  const std::vector<types::global_dof_index> dofs_per_block =
       DoFTools::count_dofs_per_fe_block (flow_dof_handler, block_of_component);
-    const IndexSet owned    = flow_dof_handler.locally_owned_dofs ();
-    const IndexSet relevant = DoFTools::extract_locally_relevant_dofs (flow_dof_handler);
-    flow_owned    = {owned.get_view (0, dofs_per_block[0]),
-                  owned.get_view (dofs_per_block[0], dofs_per_block[0] + dofs_per_block[1])};
-    flow_relevant = {relevant.get_view (0, dofs_per_block[0]),
-                     relevant.get_view (dofs_per_block[0], dofs_per_block[0] + dofs_per_block[1])};
+  const IndexSet owned    = flow_dof_handler.locally_owned_dofs ();
+  const IndexSet relevant = DoFTools::extract_locally_relevant_dofs (flow_dof_handler);
+  flow_owned              = {
+                   owned.get_view (0, dofs_per_block[0]),
+                   owned.get_view (dofs_per_block[0], dofs_per_block[0] + dofs_per_block[1])};
+  flow_relevant = {
+      relevant.get_view (0, dofs_per_block[0]),
+      relevant.get_view (dofs_per_block[0], dofs_per_block[0] + dofs_per_block[1])};
 
-    alpha_dof_handler.distribute_dofs (alpha_fe);
+  alpha_dof_handler.distribute_dofs (alpha_fe);
 
-    make_flow_constraints (0.0);
+  make_flow_constraints (0.0);
 
-    {
-      Table<2, DoFTools::Coupling> coupling (2 * dim + 1, 2 * dim + 1);
-      for (unsigned int c = 0; c < 2 * dim + 1; ++c)
-        for (unsigned int d = 0; d < 2 * dim + 1; ++d)
-          coupling[c][d] = DoFTools::always; // (p,p) kept for constrained pressure rows
-      BlockDynamicSparsityPattern dsp (flow_relevant);
-      DoFTools::make_sparsity_pattern (flow_dof_handler, coupling, dsp, flow_constraints, false);
-      SparsityTools::distribute_sparsity_pattern (dsp, owned, communicator, relevant);
-      flow_matrix.reinit (flow_owned, dsp, communicator);
-    }
-    {
-      Table<2, DoFTools::Coupling> coupling (2 * dim + 1, 2 * dim + 1);
-      for (unsigned int c = 0; c < 2 * dim + 1; ++c)
-        for (unsigned int d = 0; d < 2 * dim + 1; ++d)
-          coupling[c][d] = (c == 2 * dim && d == 2 * dim) ? DoFTools::always : DoFTools::none;
-      BlockDynamicSparsityPattern dsp (flow_relevant);
-      DoFTools::make_sparsity_pattern (flow_dof_handler, coupling, dsp, schur_constraints, false);
-      SparsityTools::distribute_sparsity_pattern (dsp, owned, communicator, relevant);
-      schur_matrix.reinit (flow_owned, dsp, communicator);
-    }
-    flow_rhs.reinit (flow_owned, communicator);
-    flow_solution.reinit (flow_owned, flow_relevant, communicator);
-    flow_old.reinit (flow_solution);
-    flow_old2.reinit (flow_solution);
+  {
+    Table<2, DoFTools::Coupling> coupling (2 * dim + 1, 2 * dim + 1);
+    for (unsigned int c = 0; c < 2 * dim + 1; ++c)
+      for (unsigned int d = 0; d < 2 * dim + 1; ++d)
+        coupling[c][d] = DoFTools::always; // (p,p) kept for constrained pressure rows
+    BlockDynamicSparsityPattern dsp (flow_relevant);
+    DoFTools::make_sparsity_pattern (
+        flow_dof_handler, coupling, dsp, flow_constraints, false);
+    SparsityTools::distribute_sparsity_pattern (dsp, owned, communicator, relevant);
+    flow_matrix.reinit (flow_owned, dsp, communicator);
+  }
+  {
+    Table<2, DoFTools::Coupling> coupling (2 * dim + 1, 2 * dim + 1);
+    for (unsigned int c = 0; c < 2 * dim + 1; ++c)
+      for (unsigned int d = 0; d < 2 * dim + 1; ++d)
+        coupling[c][d] =
+            (c == 2 * dim && d == 2 * dim) ? DoFTools::always : DoFTools::none;
+    BlockDynamicSparsityPattern dsp (flow_relevant);
+    DoFTools::make_sparsity_pattern (
+        flow_dof_handler, coupling, dsp, schur_constraints, false);
+    SparsityTools::distribute_sparsity_pattern (dsp, owned, communicator, relevant);
+    schur_matrix.reinit (flow_owned, dsp, communicator);
+  }
+  flow_rhs.reinit (flow_owned, communicator);
+  flow_solution.reinit (flow_owned, flow_relevant, communicator);
+  flow_old.reinit (flow_solution);
+  flow_old2.reinit (flow_solution);
 
-    const IndexSet alpha_relevant = DoFTools::extract_locally_relevant_dofs (alpha_dof_handler);
-    alpha.reinit (alpha_dof_handler.locally_owned_dofs (), alpha_relevant, communicator);
-    alpha_old.reinit (alpha);
-    alpha_old2.reinit (alpha);
-    transport.setup (alpha_dof_handler, mapping, alpha);
+  const IndexSet alpha_relevant =
+      DoFTools::extract_locally_relevant_dofs (alpha_dof_handler);
+  alpha.reinit (alpha_dof_handler.locally_owned_dofs (), alpha_relevant, communicator);
+  alpha_old.reinit (alpha);
+  alpha_old2.reinit (alpha);
+  transport.setup (alpha_dof_handler, mapping, alpha);
 
-    {
-      const IndexSet alpha_owned = alpha_dof_handler.locally_owned_dofs ();
-      DynamicSparsityPattern dsp (alpha_relevant);
-      DoFTools::make_sparsity_pattern (alpha_dof_handler, dsp);
-      SparsityTools::distribute_sparsity_pattern (dsp, alpha_owned, communicator, alpha_relevant);
-      correction_matrix.reinit (alpha_owned, alpha_owned, dsp, communicator);
-    }
-
-    preconditioner = std::make_unique<BlockPreconditioner> (parameters.linear_solver);
-    preconditioner->set_coupling (flow_matrix.block (0, 1));
-
-    double h = std::numeric_limits<double>::max ();
-    for (const auto &cell : triangulation.active_cell_iterators ())
-      if (cell->is_locally_owned ())
-        h = std::min (h, cell->minimum_vertex_distance ());
-    min_node_spacing = Utilities::MPI::min (h, communicator) / 2.0;
-
-    pcout << "Mesh: " << triangulation.n_global_active_cells () << " cells; flow DoFs "
-          << dofs_per_block[0] << " (u_g, u_s) + " << dofs_per_block[1] << " (p'), alpha_s DoFs "
-          << alpha_dof_handler.n_dofs () << std::endl;
+  {
+    const IndexSet         alpha_owned = alpha_dof_handler.locally_owned_dofs ();
+    DynamicSparsityPattern dsp (alpha_relevant);
+    DoFTools::make_sparsity_pattern (alpha_dof_handler, dsp);
+    SparsityTools::distribute_sparsity_pattern (
+        dsp, alpha_owned, communicator, alpha_relevant);
+    correction_matrix.reinit (alpha_owned, alpha_owned, dsp, communicator);
   }
 
-  template <int dim>
-  void
-  TwoFluidSolver<dim>::make_flow_constraints (const double at_time)
+  preconditioner = std::make_unique<BlockPreconditioner> (parameters.linear_solver);
+  preconditioner->set_coupling (flow_matrix.block (0, 1));
+
+  double h = std::numeric_limits<double>::max ();
+  for (const auto &cell : triangulation.active_cell_iterators ())
+    if (cell->is_locally_owned ())
+      h = std::min (h, cell->minimum_vertex_distance ());
+  min_node_spacing = Utilities::MPI::min (h, communicator) / 2.0;
+
+  pcout << "Mesh: " << triangulation.n_global_active_cells () << " cells; flow DoFs "
+        << dofs_per_block[0] << " (u_g, u_s) + " << dofs_per_block[1]
+        << " (p'), alpha_s DoFs " << alpha_dof_handler.n_dofs () << std::endl;
+}
+
+template <int dim>
+void TwoFluidSolver<dim>::make_flow_constraints (const double at_time)
+{
+  const IndexSet relevant = DoFTools::extract_locally_relevant_dofs (flow_dof_handler);
+  const FEValuesExtractors::Vector gas (0), solids (dim);
+  const ComponentMask              gas_mask    = flow_fe.component_mask (gas);
+  const ComponentMask              solids_mask = flow_fe.component_mask (solids);
+  const auto                       ids         = boundary_ids;
+
+  flow_constraints.clear ();
+  flow_constraints.reinit (relevant);
+  DoFTools::make_hanging_node_constraints (flow_dof_handler, flow_constraints);
+
+  if (manufactured)
   {
-    const IndexSet relevant = DoFTools::extract_locally_relevant_dofs (flow_dof_handler);
-    const FEValuesExtractors::Vector gas (0), solids (dim);
-    const ComponentMask gas_mask = flow_fe.component_mask (gas);
-    const ComponentMask solids_mask = flow_fe.component_mask (solids);
-    const auto          ids         = boundary_ids;
-
-    flow_constraints.clear ();
-    flow_constraints.reinit (relevant);
-    DoFTools::make_hanging_node_constraints (flow_dof_handler, flow_constraints);
-
-    if (manufactured)
-      {
-        // verification: exact velocities on inlet and walls, traction on the outlet
-        ManufacturedFlow<dim> exact (*manufactured);
-        ComponentMask          velocities (2 * dim + 1, true);
-        velocities.set (2 * dim, false);
-        for (const auto id : {ids.wall, ids.inlet})
-          VectorTools::interpolate_boundary_values (
-            mapping, flow_dof_handler, id, exact, flow_constraints, velocities);
-      }
-    else
-      {
-        const auto &bc = parameters.boundary;
-        if (bc.hold_solids)
+    // verification: exact velocities on inlet and walls, traction on the outlet
+    ManufacturedFlow<dim> exact (*manufactured);
+    ComponentMask         velocities (2 * dim + 1, true);
+    velocities.set (2 * dim, false);
+    for (const auto id : {ids.wall, ids.inlet})
+      VectorTools::interpolate_boundary_values (
+          mapping, flow_dof_handler, id, exact, flow_constraints, velocities);
+  }
+  else
+  {
+    const auto &bc = parameters.boundary;
+    if (bc.hold_solids)
+    {
+      const std::vector<IndexSet> by_component =
+          DoFTools::locally_owned_dofs_per_component (flow_dof_handler);
+      for (unsigned int c = dim; c < 2 * dim; ++c)
+        for (const auto i : by_component[c])
+          if (!flow_constraints.is_constrained (i))
+            flow_constraints.add_line (i);
+      // also the ghost dofs of the solids components
+      std::vector<types::global_dof_index> dofs (flow_fe.n_dofs_per_cell ());
+      for (const auto &cell : flow_dof_handler.active_cell_iterators ())
+        if (cell->is_locally_owned () || cell->is_ghost ())
+        {
+          cell->get_dof_indices (dofs);
+          for (unsigned int i = 0; i < dofs.size (); ++i)
           {
-            const std::vector<IndexSet> by_component =
-              DoFTools::locally_owned_dofs_per_component (flow_dof_handler);
-            for (unsigned int c = dim; c < 2 * dim; ++c)
-              for (const auto i : by_component[c])
-                if (!flow_constraints.is_constrained (i))
-                  flow_constraints.add_line (i);
-            // also the ghost dofs of the solids components
-            std::vector<types::global_dof_index> dofs (flow_fe.n_dofs_per_cell ());
-            for (const auto &cell : flow_dof_handler.active_cell_iterators ())
-              if (cell->is_locally_owned () || cell->is_ghost ())
-                {
-                  cell->get_dof_indices (dofs);
-                  for (unsigned int i = 0; i < dofs.size (); ++i)
-                    {
-                      const unsigned int c = flow_fe.system_to_component_index (i).first;
-                      if (c >= dim && c < 2 * dim && !flow_constraints.is_constrained (dofs[i]))
-                        flow_constraints.add_line (dofs[i]);
-                    }
-                }
+            const unsigned int c = flow_fe.system_to_component_index (i).first;
+            if (c >= dim && c < 2 * dim && !flow_constraints.is_constrained (dofs[i]))
+              flow_constraints.add_line (dofs[i]);
           }
-        // walls first: their constraints take precedence at the corners
-        if (bc.solids_wall == WallCondition::no_slip)
-          VectorTools::interpolate_boundary_values (
-            mapping, flow_dof_handler, ids.wall, Functions::ZeroFunction<dim> (2 * dim + 1),
-            flow_constraints, solids_mask);
-        else
-          VectorTools::compute_no_normal_flux_constraints (
-            flow_dof_handler, dim, {ids.wall}, flow_constraints, mapping);
-        if (bc.gas_wall == WallCondition::no_slip)
-          VectorTools::interpolate_boundary_values (
-            mapping, flow_dof_handler, ids.wall, Functions::ZeroFunction<dim> (2 * dim + 1),
-            flow_constraints, gas_mask);
-        else
-          VectorTools::compute_no_normal_flux_constraints (
-            flow_dof_handler, 0, {ids.wall}, flow_constraints, mapping);
-        // inlet: gas enters at U/(1 - alpha_in) against gravity; solids held at the
-        // distributor and retained at the outlet (a grid)
-        Tensor<1, dim> up;
-        for (unsigned int d = 0; d < dim; ++d)
-          up[d] = -parameters.physical.gravity[d];
-        up /= up.norm ();
-        const double gas_speed =
-          inlet_superficial_velocity (at_time) / (1.0 - bc.inlet_solids_fraction);
-        VectorTools::interpolate_boundary_values (
-          mapping, flow_dof_handler, ids.inlet, PhaseVelocity<dim> (0, gas_speed * up),
-          flow_constraints, gas_mask);
-        for (const auto id : {ids.inlet, ids.outlet})
-          VectorTools::interpolate_boundary_values (
-            mapping, flow_dof_handler, id, Functions::ZeroFunction<dim> (2 * dim + 1),
-            flow_constraints, solids_mask);
-      }
-    flow_constraints.close ();
-
-    // Schur preconditioner: the pressure is fixed where the outlet is traction-free
-    schur_constraints.clear ();
-    schur_constraints.reinit (relevant);
-    DoFTools::make_hanging_node_constraints (flow_dof_handler, schur_constraints);
-    ComponentMask pressure_mask (2 * dim + 1, false);
-    pressure_mask.set (2 * dim, true);
-    VectorTools::interpolate_boundary_values (mapping, flow_dof_handler, ids.outlet,
-                                              Functions::ZeroFunction<dim> (2 * dim + 1),
-                                              schur_constraints, pressure_mask);
-    schur_constraints.close ();
-  }
-
-  template <int dim>
-  void
-  TwoFluidSolver<dim>::set_initial_state ()
-  {
-    const auto &ic = parameters.initial;
+        }
+    }
+    // walls first: their constraints take precedence at the corners
+    if (bc.solids_wall == WallCondition::no_slip)
+      VectorTools::interpolate_boundary_values (
+          mapping,
+          flow_dof_handler,
+          ids.wall,
+          Functions::ZeroFunction<dim> (2 * dim + 1),
+          flow_constraints,
+          solids_mask);
+    else
+      VectorTools::compute_no_normal_flux_constraints (
+          flow_dof_handler, dim, {ids.wall}, flow_constraints, mapping);
+    if (bc.gas_wall == WallCondition::no_slip)
+      VectorTools::interpolate_boundary_values (
+          mapping,
+          flow_dof_handler,
+          ids.wall,
+          Functions::ZeroFunction<dim> (2 * dim + 1),
+          flow_constraints,
+          gas_mask);
+    else
+      VectorTools::compute_no_normal_flux_constraints (
+          flow_dof_handler, 0, {ids.wall}, flow_constraints, mapping);
+    // inlet: gas enters at U/(1 - alpha_in) against gravity; solids held at the
+    // distributor and retained at the outlet (a grid)
     Tensor<1, dim> up;
     for (unsigned int d = 0; d < dim; ++d)
       up[d] = -parameters.physical.gravity[d];
     up /= up.norm ();
+    const double gas_speed =
+        inlet_superficial_velocity (at_time) / (1.0 - bc.inlet_solids_fraction);
+    VectorTools::interpolate_boundary_values (mapping,
+                                              flow_dof_handler,
+                                              ids.inlet,
+                                              PhaseVelocity<dim> (0, gas_speed * up),
+                                              flow_constraints,
+                                              gas_mask);
+    for (const auto id : {ids.inlet, ids.outlet})
+      VectorTools::interpolate_boundary_values (
+          mapping,
+          flow_dof_handler,
+          id,
+          Functions::ZeroFunction<dim> (2 * dim + 1),
+          flow_constraints,
+          solids_mask);
+  }
+  flow_constraints.close ();
 
-    // solids fraction at the vertices (Q1 nodes)
-    const Point<dim> origin;
-    std::vector<types::global_dof_index> dofs (alpha_fe.n_dofs_per_cell ());
-    for (const auto &cell : alpha_dof_handler.active_cell_iterators ())
-      if (cell->is_locally_owned ())
+  // Schur preconditioner: the pressure is fixed where the outlet is traction-free
+  schur_constraints.clear ();
+  schur_constraints.reinit (relevant);
+  DoFTools::make_hanging_node_constraints (flow_dof_handler, schur_constraints);
+  ComponentMask pressure_mask (2 * dim + 1, false);
+  pressure_mask.set (2 * dim, true);
+  VectorTools::interpolate_boundary_values (mapping,
+                                            flow_dof_handler,
+                                            ids.outlet,
+                                            Functions::ZeroFunction<dim> (2 * dim + 1),
+                                            schur_constraints,
+                                            pressure_mask);
+  schur_constraints.close ();
+}
+
+template <int dim>
+void TwoFluidSolver<dim>::set_initial_state ()
+{
+  const auto    &ic = parameters.initial;
+  Tensor<1, dim> up;
+  for (unsigned int d = 0; d < dim; ++d)
+    up[d] = -parameters.physical.gravity[d];
+  up /= up.norm ();
+
+  // solids fraction at the vertices (Q1 nodes)
+  const Point<dim>                     origin;
+  std::vector<types::global_dof_index> dofs (alpha_fe.n_dofs_per_cell ());
+  for (const auto &cell : alpha_dof_handler.active_cell_iterators ())
+    if (cell->is_locally_owned ())
+    {
+      cell->get_dof_indices (dofs);
+      for (const unsigned int v : cell->vertex_indices ())
+      {
+        const Point<dim> x = cell->vertex (v);
+        double           value;
+        if (manufactured)
+          value = manufactured->solids_fraction (x);
+        else
         {
-          cell->get_dof_indices (dofs);
-          for (const unsigned int v : cell->vertex_indices ())
-            {
-              const Point<dim> x = cell->vertex (v);
-              double           value;
-              if (manufactured)
-                value = manufactured->solids_fraction (x);
-              else
-                {
-                  const double height = (x - origin) * up;
-                  value = height <= ic.bed_height + 1e-12 ? ic.bed_solids_fraction :
-                                                            ic.freeboard_solids_fraction;
-                }
-              if (alpha.locally_owned_elements ().is_element (dofs[v]))
-                alpha (dofs[v]) = value;
-            }
+          const double height = (x - origin) * up;
+          value               = height <= ic.bed_height + 1e-12 ? ic.bed_solids_fraction
+                                                                : ic.freeboard_solids_fraction;
         }
-    alpha.update_ghost_values ();
-    alpha_old = alpha;
-    alpha_old2 = alpha;
-
-    TrilinosWrappers::MPI::BlockVector owned_flow (flow_owned, communicator);
-    if (manufactured)
-      VectorTools::interpolate (mapping, flow_dof_handler, ManufacturedFlow<dim> (*manufactured),
-                                owned_flow);
-    else if (ic.gas_at_inlet_velocity)
-      {
-        // u_g = U/alpha_g (the superficial velocity carried by the local gas fraction)
-        const double U = inlet_superficial_velocity (0.0);
-        const double alpha_g_bed = 1.0 - ic.bed_solids_fraction;
-        const double alpha_g_top = 1.0 - ic.freeboard_solids_fraction;
-        std::vector<types::global_dof_index> flow_dofs (flow_fe.n_dofs_per_cell ());
-        const auto &support = flow_fe.get_unit_support_points ();
-        for (const auto &cell : flow_dof_handler.active_cell_iterators ())
-          if (cell->is_locally_owned ())
-            {
-              cell->get_dof_indices (flow_dofs);
-              for (unsigned int i = 0; i < flow_dofs.size (); ++i)
-                {
-                  const unsigned int c = flow_fe.system_to_component_index (i).first;
-                  if (c >= dim || !owned_flow.in_local_range (flow_dofs[i]))
-                    continue;
-                  const Point<dim> x = mapping.transform_unit_to_real_cell (cell, support[i]);
-                  const double height = (x - origin) * up;
-                  const double ag = height <= ic.bed_height ? alpha_g_bed : alpha_g_top;
-                  owned_flow (flow_dofs[i]) = U / ag * up[c];
-                }
-            }
-        owned_flow.compress (VectorOperation::insert);
+        if (alpha.locally_owned_elements ().is_element (dofs[v]))
+          alpha (dofs[v]) = value;
       }
-    flow_constraints.distribute (owned_flow);
-    flow_solution = owned_flow;
-    flow_old      = owned_flow;
-    flow_old2     = owned_flow;
-
-    initial_solids_mass = solids_mass (alpha);
-  }
-
-  template <int dim>
-  double
-  TwoFluidSolver<dim>::solids_mass (const AlphaVector &a) const
-  {
-    const auto &m   = transport.lumped_mass ();
-    double      sum = 0;
-    for (unsigned int i = 0; i < a.locally_owned_size (); ++i)
-      sum += m.local_element (i) * a.local_element (i);
-    return Utilities::MPI::sum (sum, communicator) * parameters.physical.particle_density;
-  }
-
-  template <int dim>
-  bool
-  TwoFluidSolver<dim>::try_time_step (const double dt, const unsigned int bdf_order)
-  {
-    const BDFCoefficients bdf = bdf_coefficients (bdf_order, dt, previous_time_step);
-    make_flow_constraints (time + dt);
-    last_krylov_iterations = 0;
-    std::vector<AlphaVector> nodal_velocity (dim, alpha);
-    AlphaVector              alpha_momentum (alpha_old);
-    alpha_momentum.update_ghost_values ();
-    BlockVector              velocity_for_transport (flow_old);
-    for (unsigned int k = 0; k < parameters.time.outer_iterations; ++k)
-      {
-        // 1. explicit bounded transport from t_n with u_s (t_n at k = 0, then the
-        //    midpoint of u_s^n and the latest iterate)
-        if (!parameters.boundary.hold_solids && !manufactured)
-          {
-            TimerOutput::Scope scope (timer, "alpha transport");
-            if (k > 0)
-              {
-                BlockVector owned (flow_owned, communicator);
-                owned = flow_old;
-                owned.add (1.0, flow_solution);
-                owned *= 0.5;
-                velocity_for_transport = owned;
-              }
-            solids_velocity_at_alpha_nodes (velocity_for_transport, nodal_velocity);
-            alpha = alpha_old;
-            transport.advance (alpha,
-                               nodal_velocity,
-                               dt,
-                               parameters.time.transport_cfl,
-                               parameters.physical.maximum_packing);
-            // 2. implicit solids-pressure correction
-            correct_solids_pressure (alpha_momentum, bdf, dt);
-            alpha_momentum = alpha;
-            alpha_momentum.update_ghost_values ();
-          }
-        // 3. closures at quadrature points + monolithic (u_g, u_s, p') solve
-        assemble_flow_system (bdf, dt);
-        const unsigned int iterations = solve_flow_system ();
-        if (iterations == numbers::invalid_unsigned_int)
-          return false;
-        last_krylov_iterations += iterations;
-      }
-    // accept or reject
-    double lo = std::numeric_limits<double>::max (), hi = -lo;
-    for (unsigned int i = 0; i < alpha.locally_owned_size (); ++i)
-      {
-        lo = std::min (lo, alpha.local_element (i));
-        hi = std::max (hi, alpha.local_element (i));
-      }
-    lo = Utilities::MPI::min (lo, communicator);
-    hi = Utilities::MPI::max (hi, communicator);
-    const double flow_norm = flow_solution.l2_norm ();
-    if (!std::isfinite (flow_norm) || !std::isfinite (hi))
-      return false;
-    if (lo < -1e-10 || hi > parameters.physical.maximum_packing + 1e-10)
-      return false;
-    return true;
-  }
-
-  template <int dim>
-  double
-  TwoFluidSolver<dim>::next_time_step (const double dt) const
-  {
-    const auto &ts = parameters.time;
-    if (!ts.adaptive)
-      return dt;
-    const MonitorRow &row   = monitors.last ();
-    const double      speed = std::max ({row.solids_speed_max, 0.25 * row.gas_speed_max, 1e-12});
-    const double      cfl_dt = ts.cfl_target * min_node_spacing / speed;
-    return std::min ({ts.maximum_time_step, ts.growth_factor * dt, cfl_dt});
-  }
-
-  template <int dim>
-  void
-  TwoFluidSolver<dim>::advance ()
-  {
-    const auto &ts = parameters.time;
-    double      dt = std::min (time_step, ts.end_time - time);
-    // save the state to retry from
-    const BlockVector saved_flow (flow_solution);
-    unsigned int      order = (step_number == 0) ? 1 : ts.bdf_order;
-    while (true)
-      {
-        bool accepted = false;
-        try
-          {
-            accepted = try_time_step (dt, order);
-          }
-        catch (const SolverControl::NoConvergence &)
-          {
-            accepted = false;
-          }
-        if (accepted)
-          break;
-        ++rejected_steps;
-        dt *= 0.5;
-        order = 1;
-        pcout << "  step rejected at t = " << time << "; retrying with dt = " << dt << std::endl;
-        if (dt < ts.minimum_time_step)
-          throw std::runtime_error ("time step fell below time stepping/minimum time step (" +
-                                    std::to_string (ts.minimum_time_step) + ") at t = " +
-                                    std::to_string (time) + ": the run stops here");
-        flow_solution = saved_flow;
-        alpha         = alpha_old;
-      }
-    // shift history
-    flow_old2          = flow_old;
-    flow_old           = flow_solution;
-    alpha_old2         = alpha_old;
-    alpha_old          = alpha;
-    time              += dt;
-    previous_time_step = dt;
-    ++step_number;
-    {
-      TimerOutput::Scope scope (timer, "monitors");
-      monitors.add (evaluate_monitors ());
     }
-    time_step = next_time_step (dt);
-  }
+  alpha.update_ghost_values ();
+  alpha_old  = alpha;
+  alpha_old2 = alpha;
 
-  template <int dim>
-  void
-  TwoFluidSolver<dim>::run ()
+  TrilinosWrappers::MPI::BlockVector owned_flow (flow_owned, communicator);
+  if (manufactured)
+    VectorTools::interpolate (
+        mapping, flow_dof_handler, ManufacturedFlow<dim> (*manufactured), owned_flow);
+  else if (ic.gas_at_inlet_velocity)
   {
-    if (!initialized)
-      initialize ();
-    const auto  &ts    = parameters.time;
-    const auto   start = std::chrono::steady_clock::now ();
-    {
-      TimerOutput::Scope scope (timer, "monitors");
-      MonitorRow         row = evaluate_monitors ();
-      monitors.add (row);
-    }
-    if (parameters.output.field_interval >= 0)
-      write_fields ();
-    while (time < ts.end_time * (1 - 1e-12))
+    // u_g = U/alpha_g (the superficial velocity carried by the local gas fraction)
+    const double                         U           = inlet_superficial_velocity (0.0);
+    const double                         alpha_g_bed = 1.0 - ic.bed_solids_fraction;
+    const double                         alpha_g_top = 1.0 - ic.freeboard_solids_fraction;
+    std::vector<types::global_dof_index> flow_dofs (flow_fe.n_dofs_per_cell ());
+    const auto                          &support = flow_fe.get_unit_support_points ();
+    for (const auto &cell : flow_dof_handler.active_cell_iterators ())
+      if (cell->is_locally_owned ())
       {
-        advance ();
-        if (parameters.output.field_interval > 0 && time >= next_output_time - 1e-12)
-          write_fields ();
-        if (step_number % parameters.output.progress_interval == 0 || time >= ts.end_time * (1 - 1e-12))
-          {
-            const double elapsed =
-              std::chrono::duration<double> (std::chrono::steady_clock::now () - start).count ();
-            const double eta = elapsed / time * (ts.end_time - time);
-            const auto  &row = monitors.last ();
-            pcout << "step " << std::setw (6) << step_number << "  t = " << std::setw (9)
-                  << std::setprecision (5) << time << " s  dt = " << std::setw (9) << row.time_step
-                  << "  Krylov " << std::setw (3) << row.krylov << "  FI " << std::setw (7)
-                  << row.fluidization << "  alpha_s [" << row.alpha_min << ", " << row.alpha_max
-                  << "]  mass drift " << std::setprecision (2) << row.mass_drift
-                  << "  wall " << std::setprecision (4) << elapsed << " s  ETA " << eta << " s"
-                  << std::endl;
-          }
+        cell->get_dof_indices (flow_dofs);
+        for (unsigned int i = 0; i < flow_dofs.size (); ++i)
+        {
+          const unsigned int c = flow_fe.system_to_component_index (i).first;
+          if (c >= dim || !owned_flow.in_local_range (flow_dofs[i]))
+            continue;
+          const Point<dim> x = mapping.transform_unit_to_real_cell (cell, support[i]);
+          const double     height   = (x - origin) * up;
+          const double     ag       = height <= ic.bed_height ? alpha_g_bed : alpha_g_top;
+          owned_flow (flow_dofs[i]) = U / ag * up[c];
+        }
       }
-    if (parameters.output.field_interval == 0)
-      write_fields ();
-    const double elapsed =
-      std::chrono::duration<double> (std::chrono::steady_clock::now () - start).count ();
-    pcout << "Finished: " << step_number << " steps (" << rejected_steps
-          << " rejected), wall " << elapsed << " s, "
-          << elapsed / std::max (time, 1e-300) << " s per simulated second, "
-          << 1e6 * elapsed / std::max (1u, step_number) / triangulation.n_global_active_cells ()
-          << " us per cell per step; velocity AMG builds " << preconditioner->velocity_builds
+    owned_flow.compress (VectorOperation::insert);
+  }
+  flow_constraints.distribute (owned_flow);
+  flow_solution = owned_flow;
+  flow_old      = owned_flow;
+  flow_old2     = owned_flow;
+
+  initial_solids_mass = solids_mass (alpha);
+}
+
+template <int dim>
+double TwoFluidSolver<dim>::solids_mass (const AlphaVector &a) const
+{
+  const auto &m   = transport.lumped_mass ();
+  double      sum = 0;
+  for (unsigned int i = 0; i < a.locally_owned_size (); ++i)
+    sum += m.local_element (i) * a.local_element (i);
+  return Utilities::MPI::sum (sum, communicator) * parameters.physical.particle_density;
+}
+
+template <int dim>
+bool TwoFluidSolver<dim>::try_time_step (const double dt, const unsigned int bdf_order)
+{
+  const BDFCoefficients bdf = bdf_coefficients (bdf_order, dt, previous_time_step);
+  make_flow_constraints (time + dt);
+  last_krylov_iterations = 0;
+  std::vector<AlphaVector> nodal_velocity (dim, alpha);
+  AlphaVector              alpha_momentum (alpha_old);
+  alpha_momentum.update_ghost_values ();
+  BlockVector velocity_for_transport (flow_old);
+  for (unsigned int k = 0; k < parameters.time.outer_iterations; ++k)
+  {
+    // 1. explicit bounded transport from t_n with u_s (t_n at k = 0, then the
+    //    midpoint of u_s^n and the latest iterate)
+    if (!parameters.boundary.hold_solids && !manufactured)
+    {
+      TimerOutput::Scope scope (timer, "alpha transport");
+      if (k > 0)
+      {
+        BlockVector owned (flow_owned, communicator);
+        owned = flow_old;
+        owned.add (1.0, flow_solution);
+        owned *= 0.5;
+        velocity_for_transport = owned;
+      }
+      solids_velocity_at_alpha_nodes (velocity_for_transport, nodal_velocity);
+      alpha = alpha_old;
+      transport.advance (alpha,
+                         nodal_velocity,
+                         dt,
+                         parameters.time.transport_cfl,
+                         parameters.physical.maximum_packing);
+      // 2. implicit solids-pressure correction
+      correct_solids_pressure (alpha_momentum, bdf, dt);
+      alpha_momentum = alpha;
+      alpha_momentum.update_ghost_values ();
+    }
+    // 3. closures at quadrature points + monolithic (u_g, u_s, p') solve
+    assemble_flow_system (bdf, dt);
+    const unsigned int iterations = solve_flow_system (dt);
+    if (iterations == numbers::invalid_unsigned_int)
+      return false;
+    last_krylov_iterations += iterations;
+  }
+  // accept or reject
+  double lo = std::numeric_limits<double>::max (), hi = -lo;
+  for (unsigned int i = 0; i < alpha.locally_owned_size (); ++i)
+  {
+    lo = std::min (lo, alpha.local_element (i));
+    hi = std::max (hi, alpha.local_element (i));
+  }
+  lo                     = Utilities::MPI::min (lo, communicator);
+  hi                     = Utilities::MPI::max (hi, communicator);
+  const double flow_norm = flow_solution.l2_norm ();
+  if (!std::isfinite (flow_norm) || !std::isfinite (hi))
+    return false;
+  if (lo < -1e-10 || hi > parameters.physical.maximum_packing + 1e-10)
+    return false;
+  return true;
+}
+
+template <int dim>
+double TwoFluidSolver<dim>::next_time_step (const double dt) const
+{
+  const auto &ts = parameters.time;
+  if (!ts.adaptive)
+    return dt;
+  const MonitorRow &row = monitors.last ();
+  const double speed = std::max ({row.solids_speed_max, 0.25 * row.gas_speed_max, 1e-12});
+  const double cfl_dt = ts.cfl_target * min_node_spacing / speed;
+  return std::min ({ts.maximum_time_step, ts.growth_factor * dt, cfl_dt});
+}
+
+template <int dim>
+void TwoFluidSolver<dim>::advance ()
+{
+  const auto &ts = parameters.time;
+  double      dt = std::min (time_step, ts.end_time - time);
+  // save the state to retry from
+  const BlockVector saved_flow (flow_solution);
+  unsigned int      order = (step_number == 0) ? 1 : ts.bdf_order;
+  while (true)
+  {
+    bool accepted = false;
+    try
+    {
+      accepted = try_time_step (dt, order);
+    }
+    catch (const SolverControl::NoConvergence &)
+    {
+      accepted = false;
+    }
+    if (accepted)
+      break;
+    ++rejected_steps;
+    dt *= 0.5;
+    order = 1;
+    pcout << "  step rejected at t = " << time << "; retrying with dt = " << dt
           << std::endl;
-    timer.print_wall_time_statistics (communicator);
+    if (dt < ts.minimum_time_step)
+      throw std::runtime_error ("time step fell below time stepping/minimum time step (" +
+                                std::to_string (ts.minimum_time_step) + ") at t = " +
+                                std::to_string (time) + ": the run stops here");
+    flow_solution = saved_flow;
+    alpha         = alpha_old;
   }
+  // shift history
+  flow_old2  = flow_old;
+  flow_old   = flow_solution;
+  alpha_old2 = alpha_old;
+  alpha_old  = alpha;
+  time += dt;
+  previous_time_step = dt;
+  ++step_number;
+  {
+    TimerOutput::Scope scope (timer, "monitors");
+    monitors.add (evaluate_monitors ());
+  }
+  time_step = next_time_step (dt);
+}
 
-  template class TwoFluidSolver<2>;
-  template class TwoFluidSolver<3>;
+template <int dim>
+void TwoFluidSolver<dim>::run ()
+{
+  if (!initialized)
+    initialize ();
+  const auto &ts    = parameters.time;
+  const auto  start = std::chrono::steady_clock::now ();
+  {
+    TimerOutput::Scope scope (timer, "monitors");
+    MonitorRow         row = evaluate_monitors ();
+    monitors.add (row);
+  }
+  if (parameters.output.field_interval >= 0)
+    write_fields ();
+  while (time < ts.end_time * (1 - 1e-12))
+  {
+    advance ();
+    if (parameters.output.field_interval > 0 && time >= next_output_time - 1e-12)
+      write_fields ();
+    if (step_number % parameters.output.progress_interval == 0 ||
+        time >= ts.end_time * (1 - 1e-12))
+    {
+      const double elapsed =
+          std::chrono::duration<double> (std::chrono::steady_clock::now () - start)
+              .count ();
+      const double eta = elapsed / time * (ts.end_time - time);
+      const auto  &row = monitors.last ();
+      pcout << "step " << std::setw (6) << step_number << "  t = " << std::setw (9)
+            << std::setprecision (5) << time << " s  dt = " << std::setw (9)
+            << row.time_step << "  Krylov " << std::setw (3) << row.krylov << "  FI "
+            << std::setw (7) << row.fluidization << "  alpha_s [" << row.alpha_min << ", "
+            << row.alpha_max << "]  mass drift " << std::setprecision (2)
+            << row.mass_drift << "  wall " << std::setprecision (4) << elapsed
+            << " s  ETA " << eta << " s" << std::endl;
+    }
+  }
+  if (parameters.output.field_interval == 0)
+    write_fields ();
+  const double elapsed =
+      std::chrono::duration<double> (std::chrono::steady_clock::now () - start).count ();
+  pcout << "Finished: " << step_number << " steps (" << rejected_steps
+        << " rejected), wall " << elapsed << " s, " << elapsed / std::max (time, 1e-300)
+        << " s per simulated second, "
+        << 1e6 * elapsed / std::max (1u, step_number) /
+               triangulation.n_global_active_cells ()
+        << " us per cell per step; velocity AMG builds "
+        << preconditioner->velocity_builds << std::endl;
+  timer.print_wall_time_statistics (communicator);
+}
+
+template class TwoFluidSolver<2>;
+template class TwoFluidSolver<3>;
 } // namespace wetbed

@@ -3,55 +3,74 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/la_parallel_vector.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
 
 #include <vector>
 
 namespace wetbed
 {
+/**
+ * Explicit, sub-cycled, bounded and conservative transport of the solids fraction,
+ *   d alpha/dt + div(alpha u_s) = 0,
+ * on a continuous Q1 space: lumped mass, the Galerkin operator in the conservative
+ * form k_ij = u_j . int phi_j grad phi_i (columns sum to zero, so the solids mass is
+ * conserved exactly whatever u_s does at the boundary), discrete upwinding
+ * d_ij = max(-k_ij, 0, -k_ji) for the low-order update, and Zalesak's limiter of the
+ * antidiffusive fluxes with local bounds and the global bounds [0, alpha_max]
+ * (Kuzmin-Turek algebraic FCT). Works on distributed vectors with ghosts.
+ */
+template <int dim>
+class VolumeFractionTransport
+{
+public:
+  using Vector = dealii::LinearAlgebra::distributed::Vector<double>;
+
+  /** Builds the graph, the lumped mass and the derivative matrices (once per mesh). */
+  void setup (const dealii::DoFHandler<dim> &dof_handler,
+              const dealii::Mapping<dim>    &mapping,
+              const Vector                  &layout);
+
   /**
-   * Explicit, sub-cycled, bounded and conservative transport of the solids fraction,
-   *   d alpha/dt + div(alpha u_s) = 0,
-   * on a continuous Q1 space: lumped mass, the Galerkin operator in the conservative
-   * form k_ij = u_j . int phi_j grad phi_i (columns sum to zero, so the solids mass is
-   * conserved exactly whatever u_s does at the boundary), discrete upwinding
-   * d_ij = max(-k_ij, 0, -k_ji) for the low-order update, and Zalesak's limiter of the
-   * antidiffusive fluxes with local bounds and the global bounds [0, alpha_max]
-   * (Kuzmin-Turek algebraic FCT). Works on distributed vectors with ghosts.
+   * Advances `alpha` (ghosted, in/out) by `dt` with the nodal solids velocity `u`
+   * (dim ghosted vectors); returns the number of sub-steps taken.
    */
-  template <int dim>
-  class VolumeFractionTransport
+  unsigned int advance (Vector                    &alpha,
+                        const std::vector<Vector> &u,
+                        double                     dt,
+                        double                     cfl,
+                        double                     alpha_max);
+
+  const Vector &lumped_mass () const { return mass; }
+
+  /**
+   * Applies the implicit correction increment of a symmetric, zero-row-sum diffusion
+   * operator A (off-diagonal entries A_ij, same graph) as edge fluxes
+   * G_ij = -A_ij (x_j - x_i), limited so that alpha stays in [0, alpha_max]:
+   * alpha_i += sum_j l_ij G_ij / m_i. `x` is ghosted. Returns the volume held back.
+   */
+  double apply_diffusive_fluxes (Vector                                       &alpha,
+                                 const dealii::TrilinosWrappers::SparseMatrix &A,
+                                 const Vector                                 &x,
+                                 double                                        alpha_max);
+
+  /** Statistics of the last call. */
+  double limiter_activity = 0; // fraction of antidiffusive flux removed
+  double bound_activity   = 0; // solids volume held back by the packing limit
+
+private:
+  /** alpha_i += sum_j l_ij G_ij / m_i with l_ij keeping [0, alpha_max]; returns held-back
+   * volume. */
+  double limit_to_bounds (Vector                                 &alpha,
+                          const std::vector<std::vector<double>> &flux,
+                          double                                  alpha_max);
+
+  struct Row
   {
-  public:
-    using Vector = dealii::LinearAlgebra::distributed::Vector<double>;
-
-    /** Builds the graph, the lumped mass and the derivative matrices (once per mesh). */
-    void setup (const dealii::DoFHandler<dim> &dof_handler,
-                const dealii::Mapping<dim>     &mapping,
-                const Vector                   &layout);
-
-    /**
-     * Advances `alpha` (ghosted, in/out) by `dt` with the nodal solids velocity `u`
-     * (dim ghosted vectors); returns the number of sub-steps taken.
-     */
-    unsigned int advance (Vector                    &alpha,
-                          const std::vector<Vector> &u,
-                          double                     dt,
-                          double                     cfl,
-                          double                     alpha_max);
-
-    const Vector &lumped_mass () const { return mass; }
-
-    /** Statistics of the last call. */
-    double limiter_activity = 0; // fraction of antidiffusive flux removed
-
-  private:
-    struct Row
-    {
-      std::vector<unsigned int> columns; // local indices (owned + ghost)
-      std::vector<double>       c[dim];  // int phi_j d_d phi_i
-      std::vector<double>       ct[dim]; // int phi_i d_d phi_j
-    };
-    std::vector<Row> rows; // one per locally owned dof, in local order
-    Vector           mass;
+    std::vector<unsigned int> columns; // local indices (owned + ghost)
+    std::vector<double>       c[dim];  // int phi_j d_d phi_i
+    std::vector<double>       ct[dim]; // int phi_i d_d phi_j
   };
+  std::vector<Row> rows; // one per locally owned dof, in local order
+  Vector           mass;
+};
 } // namespace wetbed

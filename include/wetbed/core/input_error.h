@@ -5,23 +5,24 @@
 
 namespace wetbed
 {
-  /**
-   * An error in the user's input: names the parameter (as `subsection/name`) or the
-   * file, and the reason. main() prints it as one line and exits with status 2.
-   */
-  class InputError : public std::runtime_error
-  {
-  public:
-    InputError (const std::string &where, const std::string &reason)
+/**
+ * An error in the user's input: names the parameter (as `subsection/name`) or the
+ * file, and the reason. main() prints it as one line and exits with status 2.
+ */
+class InputError : public std::runtime_error
+{
+public:
+  InputError (const std::string &where, const std::string &reason)
       : std::runtime_error (where + ": " + reason)
-    {}
-  };
-
-  /** Throws an InputError naming `where` unless `condition` holds. */
-  inline void
-  require (const bool condition, const std::string &where, const std::string &reason)
   {
-    if (!condition)
-      throw InputError (where, reason);
   }
+};
+
+/** Throws an InputError naming `where` unless `condition` holds. */
+inline void
+require (const bool condition, const std::string &where, const std::string &reason)
+{
+  if (!condition)
+    throw InputError (where, reason);
+}
 } // namespace wetbed

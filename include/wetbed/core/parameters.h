@@ -7,142 +7,143 @@
 
 namespace wetbed
 {
-  /** `subsection mesh`: the gmsh geometry and how its physical groups are used. */
-  struct MeshParameters
-  {
-    std::string  file;               // .geo (meshed with gmsh at start) or .msh
-    unsigned int initial_refinement; // uniform refinements after reading
-    std::string  inlet_name, outlet_name, wall_name;
-    bool         cylindrical_wall; // attach a cylinder manifold (axis = gravity) to walls
-    unsigned int mapping_degree;
+/** `subsection mesh`: the gmsh geometry and how its physical groups are used. */
+struct MeshParameters
+{
+  std::string  file;               // .geo (meshed with gmsh at start) or .msh
+  unsigned int initial_refinement; // uniform refinements after reading
+  std::string  inlet_name, outlet_name, wall_name;
+  bool         cylindrical_wall; // attach a cylinder manifold (axis = gravity) to walls
+  unsigned int mapping_degree;
 
-    static void declare_parameters (dealii::ParameterHandler &prm);
-    void        parse_parameters (dealii::ParameterHandler &prm);
-  };
+  static void declare_parameters (dealii::ParameterHandler &prm);
+  void        parse_parameters (dealii::ParameterHandler &prm);
+};
 
-  /** `subsection physical properties`: both phases, gravity, packing limit. */
-  struct PhysicalProperties
-  {
-    double              gas_density, gas_viscosity;
-    double              particle_density, particle_diameter;
-    double              maximum_packing;
-    dealii::Tensor<1, 3> gravity;
+/** `subsection physical properties`: both phases, gravity, packing limit. */
+struct PhysicalProperties
+{
+  double               gas_density, gas_viscosity;
+  double               particle_density, particle_diameter;
+  double               maximum_packing;
+  dealii::Tensor<1, 3> gravity;
 
-    static void declare_parameters (dealii::ParameterHandler &prm);
-    void        parse_parameters (dealii::ParameterHandler &prm);
-  };
+  static void declare_parameters (dealii::ParameterHandler &prm);
+  void        parse_parameters (dealii::ParameterHandler &prm);
+};
 
-  /** `subsection solids stress`: the rheology of the particle phase. */
-  struct SolidsStressParameters
-  {
-    std::string model;
-    double      shear_viscosity;          // Pa s (constant-viscosity model)
-    double      frictional_coefficient;   // Fr, Pa
-    double      frictional_exponent_n;    // n
-    double      frictional_exponent_p;    // p
-    double      frictional_onset;         // alpha_fr,min
-    double      minimum_packing_distance; // floor of (alpha_max - alpha)
+/** `subsection solids stress`: the rheology of the particle phase. */
+struct SolidsStressParameters
+{
+  std::string model;
+  double      shear_viscosity;          // Pa s (constant-viscosity model)
+  double      frictional_coefficient;   // Fr, Pa
+  double      frictional_exponent_n;    // n
+  double      frictional_exponent_p;    // p
+  double      frictional_onset;         // alpha_fr,min
+  double      minimum_packing_distance; // floor of (alpha_max - alpha)
 
-    static void declare_parameters (dealii::ParameterHandler &prm);
-    void        parse_parameters (dealii::ParameterHandler &prm, double maximum_packing);
-  };
+  static void declare_parameters (dealii::ParameterHandler &prm);
+  void        parse_parameters (dealii::ParameterHandler &prm, double maximum_packing);
+};
 
-  enum class WallCondition
-  {
-    no_slip,
-    free_slip,
-    partial_slip
-  };
+enum class WallCondition
+{
+  no_slip,
+  free_slip,
+  partial_slip
+};
 
-  /** `subsection boundary conditions`. */
-  struct BoundaryConditionParameters
-  {
-    std::string   inlet_superficial_velocity; // function of t (m/s)
-    double        inlet_solids_fraction;
-    WallCondition gas_wall, solids_wall;
-    double        solids_wall_friction; // Robin coefficient, kg m^-2 s^-1 (partial slip)
-    bool          hold_solids;          // u_s = 0 everywhere (fixed bed)
+/** `subsection boundary conditions`. */
+struct BoundaryConditionParameters
+{
+  std::string   inlet_superficial_velocity; // function of t (m/s)
+  double        inlet_solids_fraction;
+  WallCondition gas_wall, solids_wall;
+  double        solids_wall_friction; // Robin coefficient, kg m^-2 s^-1 (partial slip)
+  bool          hold_solids;          // u_s = 0 everywhere (fixed bed)
 
-    static void declare_parameters (dealii::ParameterHandler &prm);
-    void        parse_parameters (dealii::ParameterHandler &prm);
-  };
+  static void declare_parameters (dealii::ParameterHandler &prm);
+  void        parse_parameters (dealii::ParameterHandler &prm);
+};
 
-  /** `subsection initial conditions`. */
-  struct InitialConditionParameters
-  {
-    double bed_height;
-    double bed_solids_fraction;
-    double freeboard_solids_fraction;
-    bool   gas_at_inlet_velocity; // start with u_g = U/alpha_g everywhere
+/** `subsection initial conditions`. */
+struct InitialConditionParameters
+{
+  double bed_height;
+  double bed_solids_fraction;
+  double freeboard_solids_fraction;
+  bool   gas_at_inlet_velocity; // start with u_g = U/alpha_g everywhere
 
-    static void declare_parameters (dealii::ParameterHandler &prm);
-    void        parse_parameters (dealii::ParameterHandler &prm, double maximum_packing);
-  };
+  static void declare_parameters (dealii::ParameterHandler &prm);
+  void        parse_parameters (dealii::ParameterHandler &prm, double maximum_packing);
+};
 
-  /** `subsection time stepping`. */
-  struct TimeSteppingParameters
-  {
-    double       end_time, initial_time_step, maximum_time_step, minimum_time_step;
-    double       cfl_target;      // on the mixture velocity per Q2 node spacing
-    double       transport_cfl;   // per explicit alpha sub-step
-    double       growth_factor;   // largest step-to-step growth
-    unsigned int bdf_order;       // 1 or 2
-    unsigned int outer_iterations;
-    bool         adaptive;
+/** `subsection time stepping`. */
+struct TimeSteppingParameters
+{
+  double       end_time, initial_time_step, maximum_time_step, minimum_time_step;
+  double       cfl_target;    // on the mixture velocity per Q2 node spacing
+  double       transport_cfl; // per explicit alpha sub-step
+  double       growth_factor; // largest step-to-step growth
+  unsigned int bdf_order;     // 1 or 2
+  unsigned int outer_iterations;
+  bool         adaptive;
 
-    static void declare_parameters (dealii::ParameterHandler &prm);
-    void        parse_parameters (dealii::ParameterHandler &prm);
-  };
+  static void declare_parameters (dealii::ParameterHandler &prm);
+  void        parse_parameters (dealii::ParameterHandler &prm);
+};
 
-  /** `subsection linear solver`. */
-  struct LinearSolverParameters
-  {
-    double       relative_tolerance, scalar_tolerance;
-    unsigned int maximum_iterations, restart;
-    std::string  smoother;
-    unsigned int smoother_sweeps;
-    double       aggregation_threshold;
-    double       rebuild_growth; // rebuild the AMG when iterations grow by this factor
-    unsigned int rebuild_interval;
-    bool         verbose;
+/** `subsection linear solver`. */
+struct LinearSolverParameters
+{
+  double       relative_tolerance, scalar_tolerance;
+  unsigned int maximum_iterations, restart;
+  std::string  smoother;
+  unsigned int smoother_sweeps;
+  double       aggregation_threshold;
+  double       rebuild_growth; // rebuild the AMG when iterations grow by this factor
+  unsigned int rebuild_interval;
+  bool         verbose;
 
-    static void declare_parameters (dealii::ParameterHandler &prm);
-    void        parse_parameters (dealii::ParameterHandler &prm);
-  };
+  static void declare_parameters (dealii::ParameterHandler &prm);
+  void        parse_parameters (dealii::ParameterHandler &prm);
+};
 
-  /** `subsection output`. */
-  struct OutputParameters
-  {
-    std::string  folder;
-    double       field_interval; // simulated seconds between VTU outputs (0: none)
-    unsigned int monitor_interval, progress_interval;
+/** `subsection output`. */
+struct OutputParameters
+{
+  std::string  folder;
+  double       field_interval; // simulated seconds between VTU outputs (0: none)
+  unsigned int monitor_interval, progress_interval;
 
-    static void declare_parameters (dealii::ParameterHandler &prm);
-    void        parse_parameters (dealii::ParameterHandler &prm);
-  };
+  static void declare_parameters (dealii::ParameterHandler &prm);
+  void        parse_parameters (dealii::ParameterHandler &prm);
+};
 
-  /** Everything a run reads from its .prm file. */
-  struct Parameters
-  {
-    unsigned int                dimension;
-    MeshParameters              mesh;
-    PhysicalProperties          physical;
-    std::string                 drag_model;
-    SolidsStressParameters      solids_stress;
-    BoundaryConditionParameters boundary;
-    InitialConditionParameters  initial;
-    TimeSteppingParameters      time;
-    LinearSolverParameters      linear_solver;
-    OutputParameters            output;
-    std::string                 parameter_file_directory;
+/** Everything a run reads from its .prm file. */
+struct Parameters
+{
+  unsigned int                dimension;
+  MeshParameters              mesh;
+  PhysicalProperties          physical;
+  std::string                 drag_model;
+  SolidsStressParameters      solids_stress;
+  BoundaryConditionParameters boundary;
+  InitialConditionParameters  initial;
+  TimeSteppingParameters      time;
+  LinearSolverParameters      linear_solver;
+  OutputParameters            output;
+  bool                        stabilization; // SUPG + outlet backflow terms
+  std::string                 parameter_file_directory;
 
-    static void declare_parameters (dealii::ParameterHandler &prm);
-    void        parse_parameters (dealii::ParameterHandler &prm);
+  static void declare_parameters (dealii::ParameterHandler &prm);
+  void        parse_parameters (dealii::ParameterHandler &prm);
 
-    /** Reads `set dimension` alone (2 or 3) from a .prm file. */
-    static unsigned int read_dimension (const std::string &filename);
+  /** Reads `set dimension` alone (2 or 3) from a .prm file. */
+  static unsigned int read_dimension (const std::string &filename);
 
-    /** Declares, reads and checks the whole file; throws InputError on bad input. */
-    static Parameters read (const std::string &filename, dealii::ParameterHandler &prm);
-  };
+  /** Declares, reads and checks the whole file; throws InputError on bad input. */
+  static Parameters read (const std::string &filename, dealii::ParameterHandler &prm);
+};
 } // namespace wetbed

@@ -9,25 +9,25 @@
 
 namespace wetbed
 {
-  /** Boundary ids of the physical groups the solver uses. */
-  struct BoundaryIds
-  {
-    dealii::types::boundary_id inlet, outlet, wall;
-  };
+/** Boundary ids of the physical groups the solver uses. */
+struct BoundaryIds
+{
+  dealii::types::boundary_id inlet, outlet, wall;
+};
 
-  /**
-   * Reads the gmsh mesh named in `mesh/file` into `triangulation` (meshing a .geo with
-   * the gmsh executable into `output_folder` first), maps physical-group names to
-   * boundary ids, attaches manifolds and refines. Throws InputError naming the
-   * parameter or file on failure.
-   */
-  template <int dim>
-  BoundaryIds read_mesh (const MeshParameters                         &parameters,
-                         const std::string                            &parameter_directory,
-                         const std::string                            &output_folder,
-                         const dealii::Tensor<1, 3>                   &gravity,
-                         dealii::parallel::distributed::Triangulation<dim> &triangulation);
+/**
+ * Reads the gmsh mesh named in `mesh/file` into `triangulation` (meshing a .geo with
+ * the gmsh executable into `output_folder` first), maps physical-group names to
+ * boundary ids, attaches manifolds and refines. Throws InputError naming the
+ * parameter or file on failure.
+ */
+template <int dim>
+BoundaryIds read_mesh (const MeshParameters       &parameters,
+                       const std::string          &parameter_directory,
+                       const std::string          &output_folder,
+                       const dealii::Tensor<1, 3> &gravity,
+                       dealii::parallel::distributed::Triangulation<dim> &triangulation);
 
-  /** Resolves `file` relative to `directory` unless it is absolute. */
-  std::string resolve_path (const std::string &file, const std::string &directory);
+/** Resolves `file` relative to `directory` unless it is absolute. */
+std::string resolve_path (const std::string &file, const std::string &directory);
 } // namespace wetbed

@@ -6,36 +6,36 @@
 
 namespace wetbed
 {
-  /** One row of monitors.csv: the state of the bed after an accepted step. */
-  struct MonitorRow
-  {
-    unsigned int step            = 0;
-    double       time            = 0;
-    double       time_step       = 0;
-    unsigned int krylov          = 0; // FGMRES iterations summed over the outer iterations
-    unsigned int rejected        = 0; // rejected attempts so far
-    double       pressure_drop   = 0; // mean p' on the inlet minus mean p' on the outlet (Pa)
-    double       fluidization    = 0; // pressure_drop * A / (buoyant bed weight)
-    double       solids_mass     = 0; // kg (per metre depth in 2D)
-    double       mass_drift      = 0; // relative change of the solids mass since t = 0
-    double       alpha_min       = 0;
-    double       alpha_max       = 0;
-    double       gas_speed_max   = 0;
-    double       solids_speed_max = 0;
-    double       bed_height      = 0; // height below which 95% of the solids lie
-  };
+/** One row of monitors.csv: the state of the bed after an accepted step. */
+struct MonitorRow
+{
+  unsigned int step          = 0;
+  double       time          = 0;
+  double       time_step     = 0;
+  unsigned int krylov        = 0; // FGMRES iterations summed over the outer iterations
+  unsigned int rejected      = 0; // rejected attempts so far
+  double       pressure_drop = 0; // mean p' on the inlet minus mean p' on the outlet (Pa)
+  double       fluidization  = 0; // pressure_drop * A / (buoyant bed weight)
+  double       solids_mass   = 0; // kg (per metre depth in 2D)
+  double       mass_drift    = 0; // relative change of the solids mass since t = 0
+  double       alpha_min     = 0;
+  double       alpha_max     = 0;
+  double       gas_speed_max = 0;
+  double       solids_speed_max = 0;
+  double       bed_height       = 0; // height below which 95% of the solids lie
+};
 
-  /** Collects MonitorRows and writes them (rank 0) to a CSV file. */
-  class Monitors
-  {
-  public:
-    void open (const std::string &filename, bool write);
-    void add (const MonitorRow &row);
-    const MonitorRow &last () const { return rows.back (); }
-    const std::vector<MonitorRow> &all () const { return rows; }
+/** Collects MonitorRows and writes them (rank 0) to a CSV file. */
+class Monitors
+{
+public:
+  void                           open (const std::string &filename, bool write);
+  void                           add (const MonitorRow &row);
+  const MonitorRow              &last () const { return rows.back (); }
+  const std::vector<MonitorRow> &all () const { return rows; }
 
-  private:
-    std::ofstream           file;
-    std::vector<MonitorRow> rows;
-  };
+private:
+  std::ofstream           file;
+  std::vector<MonitorRow> rows;
+};
 } // namespace wetbed

@@ -10,37 +10,37 @@
 
 namespace wetbed
 {
-  /**
-   * Block upper-triangular preconditioner for [[A, B^T], [B, 0]] (DESIGN s5):
-   *   y_p = -L_c^{-1} r_p,   y_u = A^{-1} (r_u - B^T y_p),
-   * A^{-1}: one ML V-cycle on both velocities (2 dim constant modes), L_c^{-1}: one
-   * smoothed-aggregation V-cycle on the partial-elimination mobility Laplacian.
-   */
-  class BlockPreconditioner
+/**
+ * Block upper-triangular preconditioner for [[A, B^T], [B, 0]] (DESIGN s5):
+ *   y_p = -L_c^{-1} r_p,   y_u = A^{-1} (r_u - B^T y_p),
+ * A^{-1}: one ML V-cycle on both velocities (2 dim constant modes), L_c^{-1}: one
+ * smoothed-aggregation V-cycle on the partial-elimination mobility Laplacian.
+ */
+class BlockPreconditioner
+{
+public:
+  using BlockVector = dealii::TrilinosWrappers::MPI::BlockVector;
+
+  BlockPreconditioner (const LinearSolverParameters &parameters);
+
+  /** Builds (or rebuilds) the velocity hierarchy from the current A. */
+  void build_velocity (const dealii::TrilinosWrappers::SparseMatrix &velocity_matrix,
+                       const std::vector<std::vector<bool>>         &constant_modes);
+  /** Builds the Schur hierarchy from L_c. */
+  void build_schur (const dealii::TrilinosWrappers::SparseMatrix &schur_matrix);
+  void set_coupling (const dealii::TrilinosWrappers::SparseMatrix &gradient_block)
   {
-  public:
-    using BlockVector = dealii::TrilinosWrappers::MPI::BlockVector;
+    gradient = &gradient_block;
+  }
 
-    BlockPreconditioner (const LinearSolverParameters &parameters);
+  void vmult (BlockVector &dst, const BlockVector &src) const;
 
-    /** Builds (or rebuilds) the velocity hierarchy from the current A. */
-    void build_velocity (const dealii::TrilinosWrappers::SparseMatrix &velocity_matrix,
-                         const std::vector<std::vector<bool>>        &constant_modes);
-    /** Builds the Schur hierarchy from L_c. */
-    void build_schur (const dealii::TrilinosWrappers::SparseMatrix &schur_matrix);
-    void set_coupling (const dealii::TrilinosWrappers::SparseMatrix &gradient_block)
-    {
-      gradient = &gradient_block;
-    }
+  unsigned int velocity_builds = 0, schur_builds = 0;
 
-    void vmult (BlockVector &dst, const BlockVector &src) const;
-
-    unsigned int velocity_builds = 0, schur_builds = 0;
-
-  private:
-    const LinearSolverParameters                &parameters;
-    dealii::TrilinosWrappers::PreconditionAMG    velocity_amg, schur_amg;
-    const dealii::TrilinosWrappers::SparseMatrix *gradient = nullptr;
-    mutable dealii::TrilinosWrappers::MPI::Vector velocity_tmp;
-  };
+private:
+  const LinearSolverParameters                 &parameters;
+  dealii::TrilinosWrappers::PreconditionAMG     velocity_amg, schur_amg;
+  const dealii::TrilinosWrappers::SparseMatrix *gradient = nullptr;
+  mutable dealii::TrilinosWrappers::MPI::Vector velocity_tmp;
+};
 } // namespace wetbed

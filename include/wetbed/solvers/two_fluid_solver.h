@@ -29,114 +29,117 @@
 
 namespace wetbed
 {
-  /**
-   * The two-fluid solver: gas and solids momentum with one shared pressure p' = p -
-   * rho_g g.x, mixture continuity, solids continuity (explicit bounded transport with an
-   * implicit solids-pressure correction), variable-step BDF2 with accept/reject.
-   */
-  template <int dim>
-  class TwoFluidSolver
+/**
+ * The two-fluid solver: gas and solids momentum with one shared pressure p' = p -
+ * rho_g g.x, mixture continuity, solids continuity (explicit bounded transport with an
+ * implicit solids-pressure correction), variable-step BDF2 with accept/reject.
+ */
+template <int dim>
+class TwoFluidSolver
+{
+public:
+  using BlockVector = dealii::TrilinosWrappers::MPI::BlockVector;
+  using AlphaVector = dealii::LinearAlgebra::distributed::Vector<double>;
+
+  TwoFluidSolver (const Parameters &parameters, MPI_Comm communicator);
+  ~TwoFluidSolver ();
+
+  /** Attach a manufactured solution (verification runs only) before run(). */
+  void set_manufactured_solution (std::shared_ptr<const ManufacturedSolution<dim>> mms);
+
+  /** Reads the mesh, sets up and integrates to the end time. */
+  void run ();
+
+  /** Reads the mesh, sets up and imposes the initial state (run() calls it). */
+  void initialize ();
+
+  /** Advances one accepted time step (retrying smaller steps as needed). */
+  void advance ();
+
+  /** Errors of u_g, u_s (L2 and H1 seminorm) and p' (L2) against the manufactured
+   * solution. */
+  struct Errors
   {
-  public:
-    using BlockVector = dealii::TrilinosWrappers::MPI::BlockVector;
-    using AlphaVector = dealii::LinearAlgebra::distributed::Vector<double>;
-
-    TwoFluidSolver (const Parameters &parameters, MPI_Comm communicator);
-    ~TwoFluidSolver ();
-
-    /** Attach a manufactured solution (verification runs only) before run(). */
-    void set_manufactured_solution (std::shared_ptr<const ManufacturedSolution<dim>> mms);
-
-    /** Reads the mesh, sets up and integrates to the end time. */
-    void run ();
-
-    /** Reads the mesh, sets up and imposes the initial state (run() calls it). */
-    void initialize ();
-
-    /** Advances one accepted time step (retrying smaller steps as needed). */
-    void advance ();
-
-    /** Errors of u_g, u_s (L2 and H1 seminorm) and p' (L2) against the manufactured solution. */
-    struct Errors
-    {
-      double gas_velocity_l2, gas_velocity_h1, solids_velocity_l2, solids_velocity_h1,
+    double gas_velocity_l2, gas_velocity_h1, solids_velocity_l2, solids_velocity_h1,
         pressure_l2;
-    };
-    Errors compute_errors () const;
-
-    const MonitorRow &last_monitors () const { return monitors.last (); }
-    double            current_time () const { return time; }
-    unsigned int      n_cells () const { return triangulation.n_global_active_cells (); }
-
-  private:
-    // set-up (two_fluid_solver.cc)
-    void setup_dofs ();
-    void make_flow_constraints (double at_time);
-    void set_initial_state ();
-    bool try_time_step (double dt, unsigned int bdf_order);
-    double next_time_step (double dt) const;
-
-    // assembly (source/assembly/)
-    void assemble_flow_system (const BDFCoefficients &bdf, double dt);
-    void correct_solids_pressure (const AlphaVector &alpha_momentum,
-                                  const BDFCoefficients &bdf,
-                                  double                  dt);
-    void solids_velocity_at_alpha_nodes (const BlockVector &flow, std::vector<AlphaVector> &u) const;
-
-    // linear solve (source/solvers/flow_linear_solve.cc)
-    unsigned int solve_flow_system ();
-
-    // postprocessing (source/postprocess/)
-    MonitorRow evaluate_monitors () const;
-    void       write_fields () const;
-
-    double inlet_superficial_velocity (double t) const;
-    double solids_mass (const AlphaVector &alpha) const;
-
-    const Parameters   parameters;
-    MPI_Comm           communicator;
-    dealii::ConditionalOStream pcout;
-    mutable dealii::TimerOutput timer;
-
-    dealii::parallel::distributed::Triangulation<dim> triangulation;
-    BoundaryIds                                      boundary_ids;
-    dealii::MappingQ<dim>                            mapping;
-
-    dealii::FESystem<dim>   flow_fe;
-    dealii::DoFHandler<dim> flow_dof_handler;
-    dealii::FE_Q<dim>       alpha_fe;
-    dealii::DoFHandler<dim> alpha_dof_handler;
-
-    std::vector<dealii::IndexSet>     flow_owned, flow_relevant;
-    dealii::AffineConstraints<double> flow_constraints, schur_constraints;
-
-    dealii::TrilinosWrappers::BlockSparseMatrix flow_matrix, schur_matrix;
-    BlockVector                                 flow_rhs;
-    // flow solutions (ghosted): current iterate, t_n, t_{n-1}
-    BlockVector flow_solution, flow_old, flow_old2;
-
-    AlphaVector alpha, alpha_old, alpha_old2;
-
-    std::unique_ptr<closures::DragModel>         drag;
-    std::unique_ptr<closures::SolidsStressModel> solids_stress;
-    closures::GasParticleProperties               gas_particle;
-    mutable dealii::FunctionParser<1>             inlet_velocity_function;
-    std::shared_ptr<const ManufacturedSolution<dim>> manufactured;
-
-    VolumeFractionTransport<dim> transport;
-    std::unique_ptr<BlockPreconditioner> preconditioner;
-    dealii::TrilinosWrappers::SparseMatrix correction_matrix;
-
-    Monitors     monitors;
-    double       time, time_step, previous_time_step;
-    unsigned int step_number, rejected_steps, last_krylov_iterations;
-    double       next_output_time;
-    unsigned int output_index;
-    double       initial_solids_mass;
-    double       min_node_spacing;
-    // velocity AMG reuse: solves since the last build, iterations right after it
-    unsigned int solves_since_build = std::numeric_limits<unsigned int>::max () / 2;
-    unsigned int iterations_after_build = 0;
-    bool         initialized            = false;
   };
+  Errors compute_errors () const;
+
+  const MonitorRow &last_monitors () const { return monitors.last (); }
+  double            current_time () const { return time; }
+  unsigned int      n_cells () const { return triangulation.n_global_active_cells (); }
+
+private:
+  // set-up (two_fluid_solver.cc)
+  void   setup_dofs ();
+  void   make_flow_constraints (double at_time);
+  void   set_initial_state ();
+  bool   try_time_step (double dt, unsigned int bdf_order);
+  double next_time_step (double dt) const;
+
+  // assembly (source/assembly/)
+  void assemble_flow_system (const BDFCoefficients &bdf, double dt);
+  void correct_solids_pressure (const AlphaVector     &alpha_momentum,
+                                const BDFCoefficients &bdf,
+                                double                 dt);
+  void solids_velocity_at_alpha_nodes (const BlockVector        &flow,
+                                       std::vector<AlphaVector> &u) const;
+
+  // linear solve (source/solvers/flow_linear_solve.cc)
+  unsigned int solve_flow_system (double dt);
+
+  // postprocessing (source/postprocess/)
+  MonitorRow evaluate_monitors () const;
+  void       write_fields () const;
+
+  double inlet_superficial_velocity (double t) const;
+  double solids_mass (const AlphaVector &alpha) const;
+
+  const Parameters            parameters;
+  MPI_Comm                    communicator;
+  dealii::ConditionalOStream  pcout;
+  mutable dealii::TimerOutput timer;
+
+  dealii::parallel::distributed::Triangulation<dim> triangulation;
+  BoundaryIds                                       boundary_ids;
+  dealii::MappingQ<dim>                             mapping;
+
+  dealii::FESystem<dim>   flow_fe;
+  dealii::DoFHandler<dim> flow_dof_handler;
+  dealii::FE_Q<dim>       alpha_fe;
+  dealii::DoFHandler<dim> alpha_dof_handler;
+
+  std::vector<dealii::IndexSet>     flow_owned, flow_relevant;
+  dealii::AffineConstraints<double> flow_constraints, schur_constraints;
+
+  dealii::TrilinosWrappers::BlockSparseMatrix flow_matrix, schur_matrix;
+  BlockVector                                 flow_rhs;
+  // flow solutions (ghosted): current iterate, t_n, t_{n-1}
+  BlockVector flow_solution, flow_old, flow_old2;
+
+  AlphaVector alpha, alpha_old, alpha_old2;
+
+  std::unique_ptr<closures::DragModel>             drag;
+  std::unique_ptr<closures::SolidsStressModel>     solids_stress;
+  closures::GasParticleProperties                  gas_particle;
+  mutable dealii::FunctionParser<1>                inlet_velocity_function;
+  std::shared_ptr<const ManufacturedSolution<dim>> manufactured;
+
+  VolumeFractionTransport<dim>           transport;
+  std::unique_ptr<BlockPreconditioner>   preconditioner;
+  dealii::TrilinosWrappers::SparseMatrix correction_matrix;
+
+  Monitors     monitors;
+  double       time, time_step, previous_time_step;
+  unsigned int step_number, rejected_steps, last_krylov_iterations;
+  double       next_output_time;
+  unsigned int output_index;
+  double       initial_solids_mass;
+  double       min_node_spacing;
+  // velocity AMG reuse: solves since the last build, iterations right after it
+  unsigned int solves_since_build     = std::numeric_limits<unsigned int>::max () / 2;
+  unsigned int iterations_after_build = 0;
+  double       dt_at_build            = 1.0;
+  bool         initialized            = false;
+};
 } // namespace wetbed

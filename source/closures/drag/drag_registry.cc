@@ -9,46 +9,42 @@
 
 namespace wetbed::closures
 {
-  namespace
-  {
-    using Factory = std::function<std::unique_ptr<DragModel> ()>;
+namespace
+{
+using Factory = std::function<std::unique_ptr<DragModel> ()>;
 
-    template <class Law>
-    std::pair<const std::string, Factory>
-    entry ()
-    {
-      return {Law::name, [] { return std::make_unique<DragModelFromLaw<Law>> (); }};
-    }
+template <class Law>
+std::pair<const std::string, Factory> entry ()
+{
+  return {Law::name, [] { return std::make_unique<DragModelFromLaw<Law>> (); }};
+}
 
-    /** Adding a drag law: one header and one line here. */
-    const std::map<std::string, Factory> &
-    registry ()
-    {
-      static const std::map<std::string, Factory> laws = {
-        entry<SyamlalOBrien> (),
-        entry<Gidaspow> (),
-        entry<WenYu> (),
-      };
-      return laws;
-    }
-  } // namespace
+/** Adding a drag law: one header and one line here. */
+const std::map<std::string, Factory> &registry ()
+{
+  static const std::map<std::string, Factory> laws = {
+      entry<SyamlalOBrien> (),
+      entry<Gidaspow> (),
+      entry<WenYu> (),
+  };
+  return laws;
+}
+} // namespace
 
-  std::unique_ptr<DragModel>
-  create_drag_model (const std::string &name)
-  {
-    const auto it = registry ().find (name);
-    require (it != registry ().end (),
-             "drag/model",
-             "unknown drag law '" + name + "' (known: " + drag_model_names () + ")");
-    return it->second ();
-  }
+std::unique_ptr<DragModel> create_drag_model (const std::string &name)
+{
+  const auto it = registry ().find (name);
+  require (it != registry ().end (),
+           "drag/model",
+           "unknown drag law '" + name + "' (known: " + drag_model_names () + ")");
+  return it->second ();
+}
 
-  std::string
-  drag_model_names ()
-  {
-    std::string names;
-    for (const auto &[name, factory] : registry ())
-      names += (names.empty () ? "" : "|") + name;
-    return names;
-  }
+std::string drag_model_names ()
+{
+  std::string names;
+  for (const auto &[name, factory] : registry ())
+    names += (names.empty () ? "" : "|") + name;
+  return names;
+}
 } // namespace wetbed::closures

@@ -4,23 +4,23 @@
 
 namespace wetbed::closures
 {
-  std::unique_ptr<SolidsStressModel>
-  create_solids_stress_model (const SolidsStressParameters &p, const PhysicalProperties &physical)
-  {
-    const JohnsonJacksonPressureCoefficients friction{p.frictional_coefficient,
-                                                      p.frictional_exponent_n,
-                                                      p.frictional_exponent_p,
-                                                      p.frictional_onset,
-                                                      physical.maximum_packing,
-                                                      p.minimum_packing_distance};
-    if (p.model == ConstantViscosityRheology::model_name)
-      return std::make_unique<ConstantViscosityRheology> (p.shear_viscosity, friction);
-    throw InputError ("solids stress/model", "unknown model '" + p.model + "'");
-  }
+std::unique_ptr<SolidsStressModel>
+create_solids_stress_model (const SolidsStressParameters &p,
+                            const PhysicalProperties     &physical)
+{
+  const JohnsonJacksonPressureCoefficients friction{p.frictional_coefficient,
+                                                    p.frictional_exponent_n,
+                                                    p.frictional_exponent_p,
+                                                    p.frictional_onset,
+                                                    physical.maximum_packing,
+                                                    p.minimum_packing_distance};
+  if (p.model == ConstantViscosityRheology::model_name)
+    return std::make_unique<ConstantViscosityRheology> (p.shear_viscosity, friction);
+  throw InputError ("solids stress/model", "unknown model '" + p.model + "'");
+}
 
-  std::string
-  solids_stress_model_names ()
-  {
-    return ConstantViscosityRheology::model_name;
-  }
+std::string solids_stress_model_names ()
+{
+  return ConstantViscosityRheology::model_name;
+}
 } // namespace wetbed::closures

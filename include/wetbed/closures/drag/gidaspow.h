@@ -5,31 +5,31 @@
 
 namespace wetbed::closures
 {
-  /**
-   * Gidaspow (1994): Ergun, beta = 150 alpha_s^2 mu_g/(alpha_g d^2) + 1.75 alpha_s rho_g
-   * |du|/d, for alpha_g <= 0.8 (MFIX convention), Wen-Yu above.
-   */
-  struct Gidaspow
+/**
+ * Gidaspow (1994): Ergun, beta = 150 alpha_s^2 mu_g/(alpha_g d^2) + 1.75 alpha_s rho_g
+ * |du|/d, for alpha_g <= 0.8 (MFIX convention), Wen-Yu above.
+ */
+struct Gidaspow
+{
+  static constexpr const char *name = "Gidaspow";
+
+  template <typename Number>
+  static Number
+  ergun (const Number &alpha_s, const Number &slip, const GasParticleProperties &p)
   {
-    static constexpr const char *name = "Gidaspow";
+    const double d       = p.particle_diameter;
+    const Number alpha_g = 1.0 - alpha_s;
+    return 150.0 * alpha_s * alpha_s * p.gas_viscosity / (alpha_g * d * d) +
+           1.75 * alpha_s * p.gas_density * slip / d;
+  }
 
-    template <typename Number>
-    static Number
-    ergun (const Number &alpha_s, const Number &slip, const GasParticleProperties &p)
-    {
-      const double d       = p.particle_diameter;
-      const Number alpha_g = 1.0 - alpha_s;
-      return 150.0 * alpha_s * alpha_s * p.gas_viscosity / (alpha_g * d * d) +
-             1.75 * alpha_s * p.gas_density * slip / d;
-    }
-
-    template <typename Number>
-    static Number
-    beta (const Number &alpha_s, const Number &slip, const GasParticleProperties &p)
-    {
-      if (1.0 - alpha_s <= 0.8)
-        return ergun (alpha_s, slip, p);
-      return WenYu::beta (alpha_s, slip, p);
-    }
-  };
+  template <typename Number>
+  static Number
+  beta (const Number &alpha_s, const Number &slip, const GasParticleProperties &p)
+  {
+    if (1.0 - alpha_s <= 0.8)
+      return ergun (alpha_s, slip, p);
+    return WenYu::beta (alpha_s, slip, p);
+  }
+};
 } // namespace wetbed::closures

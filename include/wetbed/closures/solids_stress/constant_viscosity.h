@@ -5,33 +5,32 @@
 
 namespace wetbed::closures
 {
-  /**
-   * The simple rheology of the core solver: constant shear viscosity, no bulk
-   * viscosity, and the Johnson-Jackson frictional (compaction) pressure.
-   */
-  class ConstantViscosityRheology : public SolidsStressModel
+/**
+ * The simple rheology of the core solver: constant shear viscosity, no bulk
+ * viscosity, and the Johnson-Jackson frictional (compaction) pressure.
+ */
+class ConstantViscosityRheology : public SolidsStressModel
+{
+public:
+  static constexpr const char *model_name = "constant viscosity";
+
+  ConstantViscosityRheology (double shear_viscosity, JohnsonJacksonPressureCoefficients c)
+      : shear_viscosity (shear_viscosity), coefficients (c)
   {
-  public:
-    static constexpr const char *model_name = "constant viscosity";
+  }
 
-    ConstantViscosityRheology (double shear_viscosity, JohnsonJacksonPressureCoefficients c)
-      : shear_viscosity (shear_viscosity)
-      , coefficients (c)
-    {}
+  std::string name () const override { return model_name; }
 
-    std::string name () const override { return model_name; }
+  SolidsStress evaluate (const SolidsState &state) const override
+  {
+    return {johnson_jackson_pressure (state.alpha_s, coefficients),
+            johnson_jackson_pressure_derivative (state.alpha_s, coefficients),
+            shear_viscosity,
+            0.0};
+  }
 
-    SolidsStress
-    evaluate (const SolidsState &state) const override
-    {
-      return {johnson_jackson_pressure (state.alpha_s, coefficients),
-              johnson_jackson_pressure_derivative (state.alpha_s, coefficients),
-              shear_viscosity,
-              0.0};
-    }
-
-  private:
-    double                             shear_viscosity;
-    JohnsonJacksonPressureCoefficients coefficients;
-  };
+private:
+  double                             shear_viscosity;
+  JohnsonJacksonPressureCoefficients coefficients;
+};
 } // namespace wetbed::closures

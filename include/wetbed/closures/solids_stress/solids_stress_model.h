@@ -7,44 +7,44 @@
 
 namespace wetbed
 {
-  struct SolidsStressParameters;
-  struct PhysicalProperties;
+struct SolidsStressParameters;
+struct PhysicalProperties;
 } // namespace wetbed
 
 namespace wetbed::closures
 {
-  /** The local state the solids stress depends on. */
-  struct SolidsState
-  {
-    double alpha_s;
-    double granular_temperature; // Theta (m^2/s^2); 0 without kinetic theory
-    double shear_rate;           // sqrt(2 D_dev : D_dev) (1/s)
-  };
+/** The local state the solids stress depends on. */
+struct SolidsState
+{
+  double alpha_s;
+  double granular_temperature; // Theta (m^2/s^2); 0 without kinetic theory
+  double shear_rate;           // sqrt(2 D_dev : D_dev) (1/s)
+};
 
-  /** Solids pressure and viscosities at one quadrature point. */
-  struct SolidsStress
-  {
-    double pressure;            // P_s (Pa)
-    double pressure_derivative; // dP_s/dalpha_s (Pa)
-    double shear_viscosity;     // mu_s (Pa s), MFIX convention (no alpha_s in front)
-    double bulk_viscosity;      // lambda_s (Pa s)
-  };
+/** Solids pressure and viscosities at one quadrature point. */
+struct SolidsStress
+{
+  double pressure;            // P_s (Pa)
+  double pressure_derivative; // dP_s/dalpha_s (Pa)
+  double shear_viscosity;     // mu_s (Pa s), MFIX convention (no alpha_s in front)
+  double bulk_viscosity;      // lambda_s (Pa s)
+};
 
-  /**
-   * Rheology of the particle phase: tau_s = 2 mu_s D + (lambda_s - 2/3 mu_s) div u_s I and
-   * the solids pressure P_s. The kinetic theory plugs in here.
-   */
-  class SolidsStressModel
-  {
-  public:
-    virtual ~SolidsStressModel ()                                   = default;
-    virtual std::string  name () const                              = 0;
-    virtual SolidsStress evaluate (const SolidsState &state) const = 0;
-  };
+/**
+ * Rheology of the particle phase: tau_s = 2 mu_s D + (lambda_s - 2/3 mu_s) div u_s I and
+ * the solids pressure P_s. The kinetic theory plugs in here.
+ */
+class SolidsStressModel
+{
+public:
+  virtual ~SolidsStressModel ()                                  = default;
+  virtual std::string  name () const                             = 0;
+  virtual SolidsStress evaluate (const SolidsState &state) const = 0;
+};
 
-  std::unique_ptr<SolidsStressModel>
-  create_solids_stress_model (const SolidsStressParameters &parameters,
-                              const PhysicalProperties     &physical);
+std::unique_ptr<SolidsStressModel>
+create_solids_stress_model (const SolidsStressParameters &parameters,
+                            const PhysicalProperties     &physical);
 
-  std::string solids_stress_model_names ();
+std::string solids_stress_model_names ();
 } // namespace wetbed::closures
