@@ -68,7 +68,7 @@ template <int dim>
 TwoFluidSolver<dim>::TwoFluidSolver (const Parameters &parameters, MPI_Comm communicator)
     : parameters (parameters), communicator (communicator),
       pcout (std::cout, Utilities::MPI::this_mpi_process (communicator) == 0),
-      timer (communicator, pcout, TimerOutput::never, TimerOutput::wall_times),
+      timer (pcout, TimerOutput::never, TimerOutput::wall_times),
       triangulation (communicator,
                      typename Triangulation<dim>::MeshSmoothing (
                          Triangulation<dim>::smoothing_on_refinement |

@@ -1,0 +1,126 @@
+#!/usr/bin/env python3
+"""T15: every prm/*.prm runs a few steps; a corpus of bad inputs each exits with status 2,
+a one-line message naming the parameter (or file) and no change to existing results.
+
+usage: prm_inputs.py WETBED_EXECUTABLE SOURCE_DIR WORK_DIR
+"""
+import hashlib
+import os
+import subprocess
+import sys
+
+wetbed, source, work = (os.path.abspath(a) for a in sys.argv[1:4])
+os.makedirs(work, exist_ok=True)
+failures = []
+
+
+def run(prm_text, name):
+    path = os.path.join(work, name + ".prm")
+    with open(path, "w") as f:
+        f.write(prm_text)
+    p = subprocess.run([wetbed, path], capture_output=True, text=True, timeout=600)
+    return p.returncode, p.stdout, p.stderr
+
+
+def override(base, lines):
+    """Appends subsection overrides (a later `set` wins in deal.II's ParameterHandler)."""
+    return base + "\n" + lines + "\n"
+
+
+def with_mesh(text, prm_file):
+    mesh_dir = os.path.join(source, "meshes")
+    # make relative mesh paths absolute (the copies live in WORK_DIR)
+    out = []
+    for line in text.splitlines():
+        if line.strip().startswith("set file") and "../meshes/" in line:
+            line = line.replace("../meshes/", mesh_dir + "/")
+        out.append(line)
+    return "\n".join(out) + "\n"
+
+
+# 1. every shipped case parses and runs a few steps
+for prm in sorted(os.listdir(os.path.join(source, "prm"))):
+    if not prm.endswith(".prm"):
+        continue
+    text = with_mesh(open(os.path.join(source, "prm", prm)).read(), prm)
+    folder = os.path.join(work, "good_" + prm[:-4])
+    text = override(text, f"subsection time stepping\n set end time = 3e-4\n set initial time step = 1e-4\nend\n"
+                          f"subsection output\n set folder = {folder}\n set field interval = 0\nend")
+    code, out, err = run(text, "good_" + prm[:-4])
+    if code != 0 or not os.path.isfile(os.path.join(folder, "monitors.csv")):
+        failures.append(f"{prm}: exit {code}: {err.strip()[-300:]}")
+    else:
+        print(f"ok   {prm} runs ({len(open(os.path.join(folder, 'monitors.csv')).readlines()) - 1} rows)")
+
+# 2. bad inputs, each against a valid base that already wrote results
+base = with_mesh(open(os.path.join(source, "prm", "bubbling_bed_2d.prm")).read(), "base")
+results = os.path.join(work, "existing_results")
+base = override(base, f"subsection output\n set folder = {results}\n set field interval = 0\nend")
+code, _, err = run(override(base, "subsection time stepping\n set end time = 2e-4\nend"), "base_run")
+if code != 0:
+    failures.append("base run failed: " + err)
+monitors = os.path.join(results, "monitors.csv")
+digest = hashlib.sha256(open(monitors, "rb").read()).hexdigest() if os.path.isfile(monitors) else None
+
+cases = [
+    ("syntax error", "subsection drag\n set model Gidaspow\nend", "cannot be parsed"),
+    ("unknown parameter", "subsection drag\n set colour = red\nend", "colour"),
+    ("unknown subsection", "subsection nonsense\n set model = x\nend", "nonsense"),
+    ("unknown drag law", "subsection drag\n set model = Stokes\nend", "model"),
+    ("unknown rheology", "subsection solids stress\n set model = magic\nend", "model"),
+    ("dimension 4", "set dimension = 4", "dimension"),
+    ("negative diameter", "subsection physical properties\n set particle diameter = -1e-4\nend", "physical properties/particle diameter"),
+    ("zero particle density", "subsection physical properties\n set particle density = 0\nend", "physical properties/particle density"),
+    ("solids lighter than gas", "subsection physical properties\n set particle density = 1.0\nend", "physical properties/particle density"),
+    ("negative gas viscosity", "subsection physical properties\n set gas viscosity = -1\nend", "physical properties/gas viscosity"),
+    ("maximum packing above 1", "subsection physical properties\n set maximum packing = 1.2\nend", "physical properties/maximum packing"),
+    ("gravity with two numbers", "subsection physical properties\n set gravity = 0, -9.81\nend", "physical properties/gravity"),
+    ("gravity not a number", "subsection physical properties\n set gravity = 0, down, 0\nend", "physical properties/gravity"),
+    ("zero gravity", "subsection physical properties\n set gravity = 0, 0, 0\nend", "physical properties/gravity"),
+    ("onset above packing", "subsection solids stress\n set frictional onset = 0.65\nend", "solids stress/frictional onset"),
+    ("negative viscosity", "subsection solids stress\n set shear viscosity = -0.1\nend", "solids stress/shear viscosity"),
+    ("packing distance too large", "subsection solids stress\n set minimum packing distance = 0.05\nend", "solids stress/minimum packing distance"),
+    ("bed fraction above packing", "subsection initial conditions\n set bed solids fraction = 0.7\nend", "initial conditions/bed solids fraction"),
+    ("negative bed height", "subsection initial conditions\n set bed height = -0.1\nend", "initial conditions/bed height"),
+    ("bad inlet expression", "subsection boundary conditions\n set inlet superficial velocity = 0.8*)\nend", "boundary conditions/inlet superficial velocity"),
+    ("partial slip without friction", "subsection boundary conditions\n set solids wall condition = partial-slip\nend", "boundary conditions/solids wall friction"),
+    ("zero end time", "subsection time stepping\n set end time = 0\nend", "time stepping/end time"),
+    ("negative time step", "subsection time stepping\n set initial time step = -1e-4\nend", "time stepping/initial time step"),
+    ("time step above maximum", "subsection time stepping\n set initial time step = 1\nend", "time stepping/initial time step"),
+    ("transport cfl above 1", "subsection time stepping\n set transport cfl = 2\nend", "time stepping/transport cfl"),
+    ("bdf order 3", "subsection time stepping\n set bdf order = 3\nend", "bdf order"),
+    ("tolerance 0", "subsection linear solver\n set relative tolerance = 0\nend", "linear solver/relative tolerance"),
+    ("missing mesh", "subsection mesh\n set file = /nonexistent/column.geo\nend", "mesh/file"),
+    ("mesh of wrong type", "subsection mesh\n set file = " + os.path.join(source, "README.md") + "\nend", "mesh/file"),
+    ("unknown physical group", "subsection mesh\n set wall = side\nend", "mesh/wall"),
+    ("cylinder in 2D", "subsection mesh\n set cylindrical wall = true\nend", "mesh/cylindrical wall"),
+    ("corrupt mesh", None, "mesh/file"),
+    ("unwritable output folder", "subsection output\n set folder = /proc/wetbed-output\nend", "output/folder"),
+]
+corrupt = os.path.join(work, "corrupt.msh")
+with open(corrupt, "w") as f:
+    f.write("$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$PhysicalNames\n3\n1 1 \"inlet\"\n1 2 \"outlet\"\n1 3 \"wall\"\n$EndPhysicalNames\n$Nodes\ngarbage\n")
+for description, lines, expected in cases:
+    if lines is None:
+        lines = f"subsection mesh\n set file = {corrupt}\nend"
+    code, out, err = run(override(base, lines), "bad")
+    message = err.strip().splitlines()[-1] if err.strip() else ""
+    if code != 2 or expected not in message:
+        failures.append(f"bad input '{description}': exit {code}, message '{message[:300]}'")
+    else:
+        print(f"ok   {description}: {message[:140]}")
+if digest and hashlib.sha256(open(monitors, "rb").read()).hexdigest() != digest:
+    failures.append("an existing monitors.csv was changed by a bad-input run")
+
+# 3. the command line
+for args, expected_code in ((["--help"], 0), (["--print-parameters"], 0), ([], 1), (["/nonexistent.prm"], 2)):
+    p = subprocess.run([wetbed] + args, capture_output=True, text=True)
+    if p.returncode != expected_code:
+        failures.append(f"wetbed {' '.join(args)}: exit {p.returncode}, expected {expected_code}")
+
+n = len(cases)
+print(f"{n} bad-input cases checked")
+for f in failures:
+    print("FAILED:", f)
+print(f"{n + 4 - len(failures)} passed, {len(failures)} failed")
+sys.exit(1 if failures else 0)
