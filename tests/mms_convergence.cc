@@ -1,0 +1,379 @@
+// T2 / T3-lite: manufactured-solution convergence of the monolithic (u_g, u_s, p')
+// discretisation (Q2/Q2/Q1), 2D square and 3D cylinder (curved wall, MappingQ2).
+//   single phase: alpha_s = 0 (T2);
+//   two fluid:    linear alpha_s (represented exactly by the Q1 solids fraction, so the
+//                 flow discretisation is measured alone), Wen-Yu drag, constant solids
+//                 viscosity and the Johnson-Jackson frictional pressure active (T3-lite).
+// Sources: the strong residual of the exact fields, differentiated with nested Sacado.
+// usage: test_mms_convergence DIM single|two-fluid SOURCE_DIR WORK_DIR
+#include "test_utilities.h"
+
+#include <wetbed/closures/drag/drag_model.h>
+#include <wetbed/closures/solids_stress/solids_stress_model.h>
+#include <wetbed/core/parameters.h>
+#include <wetbed/solvers/two_fluid_solver.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <Sacado.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+
+using namespace wetbed;
+using dealii::Point;
+using dealii::Tensor;
+using F1 = Sacado::Fad::DFad<double>;
+using F2 = Sacado::Fad::DFad<F1>;
+
+namespace
+{
+constexpr double pi = 3.14159265358979323846;
+
+/** The exact fields, templated on the number type (x, y, z). */
+template <int dim, typename Number>
+struct ExactFields
+{
+  bool two_fluid;
+
+  Number alpha_s (const Number *x) const
+  {
+    if (!two_fluid)
+      return Number (0.0);
+    const Number third = dim == 3 ? Number (0.04 * x[2]) : Number (0.0);
+    return 0.3 + 0.1 * x[0] - 0.05 * x[1] + third;
+  }
+  Number gas (const Number *x, const unsigned int c) const
+  {
+    using std::cos;
+    using std::sin;
+    const Number z = dim == 3 ? x[2] : Number (0.0);
+    switch (c)
+    {
+    case 0:
+      return 0.5 * sin (pi * x[0]) * sin (pi * x[1]) + 0.2 * cos (z);
+    case 1:
+      return 0.5 * cos (pi * x[0]) * cos (pi * x[1]) + 0.3;
+    default:
+      return 0.4 * sin (pi * x[0]) * cos (pi * z) * x[1];
+    }
+  }
+  Number solids (const Number *x, const unsigned int c) const
+  {
+    using std::cos;
+    using std::sin;
+    const Number z = dim == 3 ? x[2] : Number (0.0);
+    switch (c)
+    {
+    case 0:
+      return 0.3 * cos (pi * x[0]) * sin (pi * x[1]) * (1.0 + 0.5 * z);
+    case 1:
+      return -0.2 * sin (pi * x[0]) * cos (pi * x[1]) + 0.1;
+    default:
+      return 0.2 * cos (pi * x[1]) * sin (pi * z);
+    }
+  }
+  Number pressure (const Number *x) const
+  {
+    using std::cos;
+    using std::sin;
+    const Number z = dim == 3 ? x[2] : Number (0.0);
+    return 2.0 * cos (pi * x[0]) * sin (pi * x[1]) + z * x[0];
+  }
+};
+
+template <int dim>
+class ManufacturedTwoFluid : public ManufacturedSolution<dim>
+{
+public:
+  ManufacturedTwoFluid (const bool two_fluid, const Parameters &p)
+      : two_fluid (two_fluid), parameters (p),
+        drag (closures::create_drag_model (p.drag_model)),
+        stress (closures::create_solids_stress_model (p.solids_stress, p.physical))
+  {
+  }
+
+  double solids_fraction (const Point<dim> &x) const override
+  {
+    double c[dim];
+    for (unsigned int d = 0; d < dim; ++d)
+      c[d] = x[d];
+    return ExactFields<dim, double>{two_fluid}.alpha_s (c);
+  }
+  Tensor<1, dim> gas_velocity (const Point<dim> &x) const override
+  {
+    return velocity (x, true);
+  }
+  Tensor<1, dim> solids_velocity (const Point<dim> &x) const override
+  {
+    return velocity (x, false);
+  }
+  double pressure (const Point<dim> &x) const override
+  {
+    double c[dim];
+    for (unsigned int d = 0; d < dim; ++d)
+      c[d] = x[d];
+    return ExactFields<dim, double>{two_fluid}.pressure (c);
+  }
+  Tensor<1, dim> gas_momentum_source (const Point<dim> &x) const override
+  {
+    return residual (x, true);
+  }
+  Tensor<1, dim> solids_momentum_source (const Point<dim> &x) const override
+  {
+    return residual (x, false);
+  }
+  double mixture_volume_source (const Point<dim> &x) const override
+  {
+    const Derived s   = derive (x);
+    double        div = 0;
+    for (unsigned int d = 0; d < dim; ++d)
+      div += (1 - s.alpha) * s.grad_ug[d][d] - s.grad_alpha[d] * s.ug[d] +
+             s.alpha * s.grad_us[d][d] + s.grad_alpha[d] * s.us[d];
+    return div;
+  }
+  Tensor<1, dim> gas_traction (const Point<dim>     &x,
+                               const Tensor<1, dim> &n) const override
+  {
+    const Derived s = derive (x);
+    return stress_tensor (s, true) * n - (1 - s.alpha) * s.p * n;
+  }
+  Tensor<1, dim> solids_traction (const Point<dim>     &x,
+                                  const Tensor<1, dim> &n) const override
+  {
+    const Derived s = derive (x);
+    return stress_tensor (s, false) * n - (s.alpha * s.p + solids_pressure (s.alpha)) * n;
+  }
+
+private:
+  struct Derived
+  {
+    double         alpha, p;
+    Tensor<1, dim> grad_alpha, grad_p, ug, us;
+    Tensor<2, dim> grad_ug, grad_us;     // grad[i][j] = d_j u_i
+    Tensor<1, dim> div_tau_g, div_tau_s; // divergence of the viscous stresses
+  };
+
+  Tensor<1, dim> velocity (const Point<dim> &x, const bool gas) const
+  {
+    double c[dim];
+    for (unsigned int d = 0; d < dim; ++d)
+      c[d] = x[d];
+    ExactFields<dim, double> f{two_fluid};
+    Tensor<1, dim>           u;
+    for (unsigned int d = 0; d < dim; ++d)
+      u[d] = gas ? f.gas (c, d) : f.solids (c, d);
+    return u;
+  }
+
+  double solids_pressure (const double alpha) const
+  {
+    return two_fluid ? stress->evaluate ({alpha, 0.0, 0.0}).pressure : 0.0;
+  }
+
+  Tensor<2, dim> stress_tensor (const Derived &s, const bool gas) const
+  {
+    const double mu_g         = parameters.physical.gas_viscosity,
+                 mu_s         = parameters.solids_stress.shear_viscosity;
+    const Tensor<2, dim> &g   = gas ? s.grad_ug : s.grad_us;
+    const double          mu  = gas ? (1 - s.alpha) * mu_g : mu_s;
+    const double          div = dealii::trace (g);
+    Tensor<2, dim>        tau = mu * (g + dealii::transpose (g));
+    for (unsigned int d = 0; d < dim; ++d)
+      tau[d][d] -= 2.0 / 3.0 * mu * div;
+    return tau;
+  }
+
+  Derived derive (const Point<dim> &x) const
+  {
+    F2 c[dim];
+    for (unsigned int d = 0; d < dim; ++d)
+      c[d] = F2 (dim, d, F1 (dim, d, x[d]));
+    ExactFields<dim, F2> f{two_fluid};
+    Derived              s;
+    const F2             a = f.alpha_s (c), p = f.pressure (c);
+    s.alpha = a.val ().val ();
+    s.p     = p.val ().val ();
+    F2 ug[dim], us[dim];
+    for (unsigned int i = 0; i < dim; ++i)
+    {
+      ug[i]           = f.gas (c, i);
+      us[i]           = f.solids (c, i);
+      s.ug[i]         = ug[i].val ().val ();
+      s.us[i]         = us[i].val ().val ();
+      s.grad_alpha[i] = a.dx (i).val ();
+      s.grad_p[i]     = p.dx (i).val ();
+      for (unsigned int j = 0; j < dim; ++j)
+      {
+        s.grad_ug[i][j] = ug[i].dx (j).val ();
+        s.grad_us[i][j] = us[i].dx (j).val ();
+      }
+    }
+    // div tau: tau_ij as first-order numbers, then d_j
+    const double mu_g = parameters.physical.gas_viscosity,
+                 mu_s = parameters.solids_stress.shear_viscosity;
+    for (unsigned int phase = 0; phase < 2; ++phase)
+    {
+      const F2 *u = phase == 0 ? ug : us;
+      F1        div (0.0);
+      for (unsigned int d = 0; d < dim; ++d)
+        div += u[d].dx (d);
+      const F1 mu = phase == 0 ? F1 ((1.0 - a.val ()) * mu_g) : F1 (mu_s);
+      for (unsigned int i = 0; i < dim; ++i)
+      {
+        double sum = 0;
+        for (unsigned int j = 0; j < dim; ++j)
+        {
+          F1 tau = mu * (u[i].dx (j) + u[j].dx (i));
+          if (i == j)
+            tau -= 2.0 / 3.0 * mu * div;
+          sum += tau.dx (j);
+        }
+        (phase == 0 ? s.div_tau_g : s.div_tau_s)[i] = sum;
+      }
+    }
+    return s;
+  }
+
+  Tensor<1, dim> residual (const Point<dim> &x, const bool gas) const
+  {
+    const Derived         s       = derive (x);
+    const auto           &pp      = parameters.physical;
+    const double          alpha_k = gas ? 1 - s.alpha : s.alpha;
+    const double          rho_k   = gas ? pp.gas_density : pp.particle_density;
+    const Tensor<1, dim> &u       = gas ? s.ug : s.us;
+    const Tensor<2, dim> &g       = gas ? s.grad_ug : s.grad_us;
+    const closures::GasParticleProperties gp{
+        pp.gas_density, pp.gas_viscosity, pp.particle_diameter};
+    const double beta =
+        s.alpha > 0 ? drag->coefficient (s.alpha, (s.ug - s.us).norm (), gp) : 0.0;
+    Tensor<1, dim> r = alpha_k * rho_k * (g * u) - (gas ? s.div_tau_g : s.div_tau_s) +
+                       alpha_k * s.grad_p;
+    if (gas)
+      r += beta * (s.ug - s.us);
+    else
+    {
+      Tensor<1, dim> gravity;
+      for (unsigned int d = 0; d < dim; ++d)
+        gravity[d] = pp.gravity[d];
+      const double slope =
+          two_fluid ? stress->evaluate ({s.alpha, 0.0, 0.0}).pressure_derivative : 0.0;
+      r += slope * s.grad_alpha - beta * (s.ug - s.us) -
+           s.alpha * (pp.particle_density - pp.gas_density) * gravity;
+    }
+    return r;
+  }
+
+  bool                                         two_fluid;
+  Parameters                                   parameters;
+  std::unique_ptr<closures::DragModel>         drag;
+  std::unique_ptr<closures::SolidsStressModel> stress;
+};
+
+std::string case_text (const int          dim,
+                       const std::string &mesh,
+                       const unsigned int refinement,
+                       const std::string &folder)
+{
+  std::ostringstream s;
+  s << "set dimension = " << dim << "\n"
+    << "subsection mesh\n set file = " << mesh
+    << "\n set initial refinement = " << refinement
+    << "\n set cylindrical wall = " << (dim == 3 ? "true" : "false") << "\nend\n"
+    << "subsection physical properties\n set gas density = 1\n set gas viscosity = 0.05\n"
+    << " set particle density = 2\n set particle diameter = 0.01\n set maximum packing = "
+       "0.61\n"
+    << " set gravity = 0, " << (dim == 2 ? "-1, 0" : "0, -1") << "\nend\n"
+    << "subsection drag\n set model = Wen-Yu\nend\n"
+    << "subsection solids stress\n set shear viscosity = 0.1\n set frictional "
+       "coefficient = 0.5\n"
+    << " set frictional onset = 0.15\nend\n"
+    << "subsection stabilization\n set enabled = false\nend\n"
+    << "subsection boundary conditions\n set inlet superficial velocity = 0\nend\n"
+    << "subsection time stepping\n set end time = 1e4\n set initial time step = 1e4\n"
+    << " set maximum time step = 1e4\n set bdf order = 1\n set outer iterations = 6\n "
+       "set adaptive = false\nend\n"
+    << "subsection linear solver\n set relative tolerance = 1e-10\n set maximum "
+       "iterations = 1000\nend\n"
+    << "subsection output\n set folder = " << folder
+    << "\n set field interval = 0\nend\n";
+  return s.str ();
+}
+} // namespace
+
+int main (int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi (argc, argv, 1);
+  const int                                dim = std::stoi (argv[1]);
+  const bool        two_fluid                  = std::string (argv[2]) == "two-fluid";
+  const std::string source = argv[3], work = argv[4];
+  const std::string mesh =
+      source + (dim == 2 ? "/tests/meshes/square.geo" : "/tests/meshes/cylinder.geo");
+  const std::vector<unsigned int> levels =
+      dim == 2 ? std::vector<unsigned int>{1, 2, 3} : std::vector<unsigned int>{0, 1, 2};
+
+  std::vector<std::array<double, 5>> errors;
+  std::vector<double>                sizes;
+  for (const unsigned int level : levels)
+  {
+    const std::string folder = work + "/mms_" + std::to_string (dim) + "d_" + argv[2] +
+                               "_" + std::to_string (level);
+    std::filesystem::create_directories (folder);
+    const std::string prm_file = folder + "/case.prm";
+    std::ofstream (prm_file) << case_text (dim, mesh, level, folder);
+    dealii::ParameterHandler prm;
+    const Parameters         parameters = Parameters::read (prm_file, prm);
+    std::array<double, 5>    e;
+    double                   n_cells;
+    if (dim == 2)
+    {
+      TwoFluidSolver<2> solver (parameters, MPI_COMM_WORLD);
+      solver.set_manufactured_solution (
+          std::make_shared<ManufacturedTwoFluid<2>> (two_fluid, parameters));
+      solver.run ();
+      const auto r = solver.compute_errors ();
+      e            = {r.gas_velocity_l2,
+                      r.gas_velocity_h1,
+                      r.solids_velocity_l2,
+                      r.solids_velocity_h1,
+                      r.pressure_l2};
+      n_cells      = solver.n_cells ();
+    }
+    else
+    {
+      TwoFluidSolver<3> solver (parameters, MPI_COMM_WORLD);
+      solver.set_manufactured_solution (
+          std::make_shared<ManufacturedTwoFluid<3>> (two_fluid, parameters));
+      solver.run ();
+      const auto r = solver.compute_errors ();
+      e            = {r.gas_velocity_l2,
+                      r.gas_velocity_h1,
+                      r.solids_velocity_l2,
+                      r.solids_velocity_h1,
+                      r.pressure_l2};
+      n_cells      = solver.n_cells ();
+    }
+    errors.push_back (e);
+    sizes.push_back (std::pow (n_cells, -1.0 / dim));
+  }
+
+  const std::array<std::string, 5> names = {
+      "|u_g|_L2", "|grad u_g|_L2", "|u_s|_L2", "|grad u_s|_L2", "|p'|_L2"};
+  const std::array<double, 5> expected = {3, 2, 3, 2, 2};
+  std::cout << "MMS " << dim << "D " << argv[2] << "\n";
+  for (unsigned int k = 0; k < 5; ++k)
+  {
+    std::cout << std::setw (14) << names[k];
+    for (unsigned int l = 0; l < errors.size (); ++l)
+      std::cout << "  " << std::scientific << std::setprecision (3) << errors[l][k];
+    const unsigned int n = errors.size () - 1;
+    const double       rate =
+        std::log (errors[n - 1][k] / errors[n][k]) / std::log (sizes[n - 1] / sizes[n]);
+    std::cout << "  rate " << std::fixed << std::setprecision (2) << rate << "\n";
+    testing::check (rate > expected[k] - 0.2,
+                    names[k] + " rate " + std::to_string (rate) + " < " +
+                        std::to_string (expected[k] - 0.2));
+  }
+  return testing::finish ("mms_convergence");
+}
