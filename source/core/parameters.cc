@@ -200,12 +200,9 @@ void BoundaryConditionParameters::declare_parameters (ParameterHandler &prm)
   prm.declare_entry ("inlet superficial velocity",
                      "0.8",
                      Anything (),
-                     "Superficial gas velocity U at the inlet (m/s), a function of t "
+                     "Superficial gas velocity U at the inlet (m/s), a function of t; the "
+                     "gas enters at U/alpha_g with the local gas fraction "
                      "(muparser syntax, e.g. 'min(0.8, 0.2*t)').");
-  prm.declare_entry ("inlet solids fraction",
-                     "0",
-                     Double (0, 1),
-                     "alpha_s at the inlet; the gas enters at U/(1-alpha_s,in).");
   prm.declare_entry ("gas wall condition",
                      "no-slip",
                      Selection ("no-slip|free-slip"),
@@ -230,7 +227,6 @@ void BoundaryConditionParameters::parse_parameters (ParameterHandler &prm)
 {
   prm.enter_subsection ("boundary conditions");
   inlet_superficial_velocity = prm.get ("inlet superficial velocity");
-  inlet_solids_fraction      = prm.get_double ("inlet solids fraction");
   gas_wall             = wall_condition_from_string (prm.get ("gas wall condition"));
   solids_wall          = wall_condition_from_string (prm.get ("solids wall condition"));
   solids_wall_friction = prm.get_double ("solids wall friction");
@@ -261,6 +257,12 @@ void InitialConditionParameters::declare_parameters (ParameterHandler &prm)
   prm.declare_entry ("bed solids fraction", "0.58", Double (), "alpha_s in the bed.");
   prm.declare_entry (
       "freeboard solids fraction", "0", Double (), "alpha_s above the bed.");
+  prm.declare_entry ("bed profile",
+                     "uniform",
+                     Selection ("uniform|hydrostatic"),
+                     "uniform: bed solids fraction up to the bed height. hydrostatic: a "
+                     "packed bed at rest, alpha_s(z) from dP_s/dz = -alpha_s (rho_s - "
+                     "rho_g) g with P_s = 0 at the bed height (needs a solids pressure).");
   prm.declare_entry ("gas at inlet velocity",
                      "true",
                      Bool (),
@@ -276,6 +278,7 @@ void InitialConditionParameters::parse_parameters (ParameterHandler &prm,
   bed_solids_fraction       = prm.get_double ("bed solids fraction");
   freeboard_solids_fraction = prm.get_double ("freeboard solids fraction");
   gas_at_inlet_velocity     = prm.get_bool ("gas at inlet velocity");
+  hydrostatic_bed           = prm.get ("bed profile") == "hydrostatic";
   prm.leave_subsection ();
   require (bed_height >= 0.0, "initial conditions/bed height", "must be >= 0");
   require (bed_solids_fraction >= 0.0 && bed_solids_fraction <= maximum_packing,

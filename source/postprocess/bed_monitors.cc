@@ -69,28 +69,34 @@ MonitorRow TwoFluidSolver<dim>::evaluate_monitors () const
   row.alpha_min = Utilities::MPI::min (lo, communicator);
   row.alpha_max = Utilities::MPI::max (hi, communicator);
 
-  // peak speeds at the Q2 nodes
-  std::vector<types::global_dof_index> dofs (flow_fe.n_dofs_per_cell ());
-  double                               gas_speed = 0, solids_speed = 0;
+  // peak speeds: gas at every Q2 node, solids at the vertices where alpha_s > 1e-3
+  // (u_s has no meaning where there are no solids)
+  std::vector<types::global_dof_index> dofs (flow_fe.n_dofs_per_cell ()),
+      alpha_cell_dofs (alpha_fe.n_dofs_per_cell ());
+  double gas_speed = 0, solids_speed = 0;
+  auto   alpha_cell = alpha_dof_handler.begin_active ();
   for (const auto &cell : flow_dof_handler.active_cell_iterators ())
+  {
     if (cell->is_locally_owned ())
     {
       cell->get_dof_indices (dofs);
-      for (unsigned int node = 0; node < flow_fe.base_element (0).n_dofs_per_cell ();
-           ++node)
+      alpha_cell->get_dof_indices (alpha_cell_dofs);
+      for (unsigned int node = 0; node < flow_fe.base_element (0).n_dofs_per_cell (); ++node)
       {
         double g2 = 0, s2 = 0;
         for (unsigned int d = 0; d < dim; ++d)
         {
-          g2 += std::pow (
-              flow_solution (dofs[flow_fe.component_to_system_index (d, node)]), 2);
-          s2 += std::pow (
-              flow_solution (dofs[flow_fe.component_to_system_index (dim + d, node)]), 2);
+          g2 += std::pow (flow_solution (dofs[flow_fe.component_to_system_index (d, node)]), 2);
+          s2 += std::pow (flow_solution (dofs[flow_fe.component_to_system_index (dim + d, node)]),
+                          2);
         }
-        gas_speed    = std::max (gas_speed, std::sqrt (g2));
-        solids_speed = std::max (solids_speed, std::sqrt (s2));
+        gas_speed = std::max (gas_speed, std::sqrt (g2));
+        if (node < GeometryInfo<dim>::vertices_per_cell && alpha (alpha_cell_dofs[node]) > 1e-3)
+          solids_speed = std::max (solids_speed, std::sqrt (s2));
       }
     }
+    ++alpha_cell;
+  }
   row.gas_speed_max    = Utilities::MPI::max (gas_speed, communicator);
   row.solids_speed_max = Utilities::MPI::max (solids_speed, communicator);
 

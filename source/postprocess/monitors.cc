@@ -19,10 +19,10 @@ void Monitors::add (const MonitorRow &r)
   rows.push_back (r);
   if (!file.is_open ())
     return;
-  file << r.step << ',' << std::setprecision (10) << r.time << ',' << r.time_step << ','
+  file << r.step << ',' << std::setprecision (15) << r.time << ',' << r.time_step << ','
        << r.krylov << ',' << r.rejected << ',' << r.pressure_drop << ',' << r.fluidization
        << ',' << std::setprecision (15) << r.solids_mass << ',' << r.mass_drift << ','
-       << std::setprecision (10) << r.alpha_min << ',' << r.alpha_max << ','
+       << std::setprecision (15) << r.alpha_min << ',' << r.alpha_max << ','
        << r.gas_speed_max << ',' << r.solids_speed_max << ',' << r.bed_height << '\n';
   file.flush ();
 }

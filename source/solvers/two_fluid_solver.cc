@@ -2,6 +2,8 @@
 #include <wetbed/solvers/two_fluid_solver.h>
 
 #include <deal.II/base/function.h>
+#include <deal.II/base/quadrature.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/base/utilities.h>
 #include <deal.II/dofs/dof_renumbering.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -22,25 +24,6 @@ using namespace dealii;
 namespace
 {
 /** Constant vector function on `n_components`, nonzero only in [first, first+dim). */
-template <int dim>
-class PhaseVelocity : public Function<dim>
-{
-public:
-  PhaseVelocity (const unsigned int first, const Tensor<1, dim> &value)
-      : Function<dim> (2 * dim + 1), first (first), velocity (value)
-  {
-  }
-  double value (const Point<dim> &, const unsigned int component) const override
-  {
-    return (component >= first && component < first + dim) ? velocity[component - first]
-                                                           : 0.0;
-  }
-
-private:
-  unsigned int   first;
-  Tensor<1, dim> velocity;
-};
-
 /** The manufactured velocities as a flow-system function (for boundary values). */
 template <int dim>
 class ManufacturedFlow : public Function<dim>
@@ -163,6 +146,12 @@ void TwoFluidSolver<dim>::setup_dofs ()
 
   alpha_dof_handler.distribute_dofs (alpha_fe);
 
+  // the solids fraction first: the inlet constraints read it
+  const IndexSet alpha_relevant =
+      DoFTools::extract_locally_relevant_dofs (alpha_dof_handler);
+  alpha.reinit (alpha_dof_handler.locally_owned_dofs (), alpha_relevant, communicator);
+  alpha_old.reinit (alpha);
+  alpha_old2.reinit (alpha);
   make_flow_constraints (0.0);
 
   {
@@ -193,11 +182,6 @@ void TwoFluidSolver<dim>::setup_dofs ()
   flow_old.reinit (flow_solution);
   flow_old2.reinit (flow_solution);
 
-  const IndexSet alpha_relevant =
-      DoFTools::extract_locally_relevant_dofs (alpha_dof_handler);
-  alpha.reinit (alpha_dof_handler.locally_owned_dofs (), alpha_relevant, communicator);
-  alpha_old.reinit (alpha);
-  alpha_old2.reinit (alpha);
   transport.setup (alpha_dof_handler, mapping, alpha);
 
   {
@@ -294,20 +278,43 @@ void TwoFluidSolver<dim>::make_flow_constraints (const double at_time)
     else
       VectorTools::compute_no_normal_flux_constraints (
           flow_dof_handler, 0, {ids.wall}, flow_constraints, mapping);
-    // inlet: gas enters at U/(1 - alpha_in) against gravity; solids held at the
-    // distributor and retained at the outlet (a grid)
-    Tensor<1, dim> up;
-    for (unsigned int d = 0; d < dim; ++d)
-      up[d] = -parameters.physical.gravity[d];
-    up /= up.norm ();
-    const double gas_speed =
-        inlet_superficial_velocity (at_time) / (1.0 - bc.inlet_solids_fraction);
-    VectorTools::interpolate_boundary_values (mapping,
-                                              flow_dof_handler,
-                                              ids.inlet,
-                                              PhaseVelocity<dim> (0, gas_speed * up),
-                                              flow_constraints,
-                                              gas_mask);
+    // inlet: the gas enters against gravity with the superficial velocity U, i.e. at
+    // U/alpha_g with the local gas fraction at each node, so the volume flux is U
+    // whatever bed sits on the distributor; solids are held at the distributor and
+    // retained at the outlet (a grid)
+    {
+      Tensor<1, dim> up;
+      for (unsigned int d = 0; d < dim; ++d)
+        up[d] = -parameters.physical.gravity[d];
+      up /= up.norm ();
+      const double                         U = inlet_superficial_velocity (at_time);
+      const Quadrature<dim>                nodes (flow_fe.get_unit_support_points ());
+      FEValues<dim>                        alpha_at_nodes (mapping, alpha_fe, nodes, update_values);
+      std::vector<double>                  alpha_values (nodes.size ());
+      std::vector<types::global_dof_index> dofs (flow_fe.n_dofs_per_cell ());
+      auto                                 alpha_cell = alpha_dof_handler.begin_active ();
+      for (const auto &cell : flow_dof_handler.active_cell_iterators ())
+      {
+        if ((cell->is_locally_owned () || cell->is_ghost ()) && cell->at_boundary ())
+          for (const unsigned int f : cell->face_indices ())
+            if (cell->face (f)->at_boundary () && cell->face (f)->boundary_id () == ids.inlet)
+            {
+              alpha_at_nodes.reinit (alpha_cell);
+              alpha_at_nodes.get_function_values (alpha, alpha_values);
+              cell->get_dof_indices (dofs);
+              for (unsigned int i = 0; i < dofs.size (); ++i)
+              {
+                const unsigned int c = flow_fe.system_to_component_index (i).first;
+                if (c >= dim || !flow_fe.has_support_on_face (i, f) ||
+                    flow_constraints.is_constrained (dofs[i]))
+                  continue;
+                flow_constraints.add_line (dofs[i]);
+                flow_constraints.set_inhomogeneity (dofs[i], U / (1.0 - alpha_values[i]) * up[c]);
+              }
+            }
+        ++alpha_cell;
+      }
+    }
     for (const auto id : {ids.inlet, ids.outlet})
       VectorTools::interpolate_boundary_values (
           mapping,
@@ -359,8 +366,12 @@ void TwoFluidSolver<dim>::set_initial_state ()
         else
         {
           const double height = (x - origin) * up;
-          value               = height <= ic.bed_height + 1e-12 ? ic.bed_solids_fraction
-                                                                : ic.freeboard_solids_fraction;
+          if (ic.hydrostatic_bed)
+            value = height <= ic.bed_height + 1e-12 ? hydrostatic_solids_fraction (height)
+                                                    : ic.freeboard_solids_fraction;
+          else
+            value = height <= ic.bed_height + 1e-12 ? ic.bed_solids_fraction
+                                                    : ic.freeboard_solids_fraction;
         }
         if (alpha.locally_owned_elements ().is_element (dofs[v]))
           alpha (dofs[v]) = value;
@@ -369,6 +380,7 @@ void TwoFluidSolver<dim>::set_initial_state ()
   alpha.update_ghost_values ();
   alpha_old  = alpha;
   alpha_old2 = alpha;
+  make_flow_constraints (0.0); // the inlet gas velocity depends on alpha_s
 
   TrilinosWrappers::MPI::BlockVector owned_flow (flow_owned, communicator);
   if (manufactured)
@@ -405,6 +417,37 @@ void TwoFluidSolver<dim>::set_initial_state ()
   flow_old2     = owned_flow;
 
   initial_solids_mass = solids_mass (alpha);
+}
+
+template <int dim>
+double TwoFluidSolver<dim>::hydrostatic_solids_fraction (const double height) const
+{
+  // integrate dP/dz = -alpha(P) (rho_s - rho_g) |g| downward from P = 0 at the bed top,
+  // alpha(P) the inverse of the (monotone) solids pressure, by RK4 in z
+  const auto  &pp     = parameters.physical;
+  const double weight = (pp.particle_density - pp.gas_density) * pp.gravity.norm ();
+  auto         alpha_of_pressure = [&] (const double P) {
+    double lo = 0.0, hi = pp.maximum_packing;
+    for (unsigned int k = 0; k < 200; ++k)
+    {
+      const double mid = 0.5 * (lo + hi);
+      (solids_stress->evaluate ({mid, 0.0, 0.0}).pressure < P ? lo : hi) = mid;
+    }
+    return 0.5 * (lo + hi);
+  };
+  const double       depth = parameters.initial.bed_height - height;
+  const unsigned int n     = 2000;
+  const double       dz    = depth / n;
+  double             P     = 0;
+  for (unsigned int k = 0; k < n; ++k)
+  {
+    const double k1 = weight * alpha_of_pressure (P);
+    const double k2 = weight * alpha_of_pressure (P + 0.5 * dz * k1);
+    const double k3 = weight * alpha_of_pressure (P + 0.5 * dz * k2);
+    const double k4 = weight * alpha_of_pressure (P + dz * k3);
+    P += dz / 6.0 * (k1 + 2 * k2 + 2 * k3 + k4);
+  }
+  return alpha_of_pressure (P);
 }
 
 template <int dim>

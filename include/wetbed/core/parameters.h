@@ -58,7 +58,6 @@ enum class WallCondition
 struct BoundaryConditionParameters
 {
   std::string   inlet_superficial_velocity; // function of t (m/s)
-  double        inlet_solids_fraction;
   WallCondition gas_wall, solids_wall;
   double        solids_wall_friction; // Robin coefficient, kg m^-2 s^-1 (partial slip)
   bool          hold_solids;          // u_s = 0 everywhere (fixed bed)
@@ -74,6 +73,7 @@ struct InitialConditionParameters
   double bed_solids_fraction;
   double freeboard_solids_fraction;
   bool   gas_at_inlet_velocity; // start with u_g = U/alpha_g everywhere
+  bool   hydrostatic_bed;       // alpha_s(z) from dP_s/dz = -alpha_s (rho_s - rho_g) g
 
   static void declare_parameters (dealii::ParameterHandler &prm);
   void        parse_parameters (dealii::ParameterHandler &prm, double maximum_packing);

@@ -94,6 +94,7 @@ private:
 
   double inlet_superficial_velocity (double t) const;
   double solids_mass (const AlphaVector &alpha) const;
+  double hydrostatic_solids_fraction (double height) const;
 
   const Parameters            parameters;
   MPI_Comm                    communicator;
