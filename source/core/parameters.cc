@@ -197,12 +197,13 @@ void SolidsStressParameters::parse_parameters (ParameterHandler &prm,
 void BoundaryConditionParameters::declare_parameters (ParameterHandler &prm)
 {
   prm.enter_subsection ("boundary conditions");
-  prm.declare_entry ("inlet superficial velocity",
-                     "0.8",
-                     Anything (),
-                     "Superficial gas velocity U at the inlet (m/s), a function of t; the "
-                     "gas enters at U/alpha_g with the local gas fraction "
-                     "(muparser syntax, e.g. 'min(0.8, 0.2*t)').");
+  prm.declare_entry (
+      "inlet superficial velocity",
+      "0.8",
+      Anything (),
+      "Superficial gas velocity U at the inlet (m/s), a function of t; the "
+      "gas enters at U/alpha_g with the local gas fraction "
+      "(muparser syntax, e.g. 'min(0.8, 0.2*t)').");
   prm.declare_entry ("gas wall condition",
                      "no-slip",
                      Selection ("no-slip|free-slip"),
@@ -257,12 +258,13 @@ void InitialConditionParameters::declare_parameters (ParameterHandler &prm)
   prm.declare_entry ("bed solids fraction", "0.58", Double (), "alpha_s in the bed.");
   prm.declare_entry (
       "freeboard solids fraction", "0", Double (), "alpha_s above the bed.");
-  prm.declare_entry ("bed profile",
-                     "uniform",
-                     Selection ("uniform|hydrostatic"),
-                     "uniform: bed solids fraction up to the bed height. hydrostatic: a "
-                     "packed bed at rest, alpha_s(z) from dP_s/dz = -alpha_s (rho_s - "
-                     "rho_g) g with P_s = 0 at the bed height (needs a solids pressure).");
+  prm.declare_entry (
+      "bed profile",
+      "uniform",
+      Selection ("uniform|hydrostatic"),
+      "uniform: bed solids fraction up to the bed height. hydrostatic: a "
+      "packed bed at rest, alpha_s(z) from dP_s/dz = -alpha_s (rho_s - "
+      "rho_g) g with P_s = 0 at the bed height (needs a solids pressure).");
   prm.declare_entry ("gas at inlet velocity",
                      "true",
                      Bool (),

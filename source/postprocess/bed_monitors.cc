@@ -81,17 +81,20 @@ MonitorRow TwoFluidSolver<dim>::evaluate_monitors () const
     {
       cell->get_dof_indices (dofs);
       alpha_cell->get_dof_indices (alpha_cell_dofs);
-      for (unsigned int node = 0; node < flow_fe.base_element (0).n_dofs_per_cell (); ++node)
+      for (unsigned int node = 0; node < flow_fe.base_element (0).n_dofs_per_cell ();
+           ++node)
       {
         double g2 = 0, s2 = 0;
         for (unsigned int d = 0; d < dim; ++d)
         {
-          g2 += std::pow (flow_solution (dofs[flow_fe.component_to_system_index (d, node)]), 2);
-          s2 += std::pow (flow_solution (dofs[flow_fe.component_to_system_index (dim + d, node)]),
-                          2);
+          g2 += std::pow (
+              flow_solution (dofs[flow_fe.component_to_system_index (d, node)]), 2);
+          s2 += std::pow (
+              flow_solution (dofs[flow_fe.component_to_system_index (dim + d, node)]), 2);
         }
         gas_speed = std::max (gas_speed, std::sqrt (g2));
-        if (node < GeometryInfo<dim>::vertices_per_cell && alpha (alpha_cell_dofs[node]) > 1e-3)
+        if (node < GeometryInfo<dim>::vertices_per_cell &&
+            alpha (alpha_cell_dofs[node]) > 1e-3)
           solids_speed = std::max (solids_speed, std::sqrt (s2));
       }
     }

@@ -3,10 +3,10 @@
 
 #include <deal.II/base/function.h>
 #include <deal.II/base/quadrature.h>
-#include <deal.II/fe/fe_values.h>
 #include <deal.II/base/utilities.h>
 #include <deal.II/dofs/dof_renumbering.h>
 #include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/block_sparsity_pattern.h>
 #include <deal.II/lac/solver_control.h>
@@ -287,17 +287,18 @@ void TwoFluidSolver<dim>::make_flow_constraints (const double at_time)
       for (unsigned int d = 0; d < dim; ++d)
         up[d] = -parameters.physical.gravity[d];
       up /= up.norm ();
-      const double                         U = inlet_superficial_velocity (at_time);
-      const Quadrature<dim>                nodes (flow_fe.get_unit_support_points ());
-      FEValues<dim>                        alpha_at_nodes (mapping, alpha_fe, nodes, update_values);
-      std::vector<double>                  alpha_values (nodes.size ());
+      const double          U = inlet_superficial_velocity (at_time);
+      const Quadrature<dim> nodes (flow_fe.get_unit_support_points ());
+      FEValues<dim>         alpha_at_nodes (mapping, alpha_fe, nodes, update_values);
+      std::vector<double>   alpha_values (nodes.size ());
       std::vector<types::global_dof_index> dofs (flow_fe.n_dofs_per_cell ());
       auto                                 alpha_cell = alpha_dof_handler.begin_active ();
       for (const auto &cell : flow_dof_handler.active_cell_iterators ())
       {
         if ((cell->is_locally_owned () || cell->is_ghost ()) && cell->at_boundary ())
           for (const unsigned int f : cell->face_indices ())
-            if (cell->face (f)->at_boundary () && cell->face (f)->boundary_id () == ids.inlet)
+            if (cell->face (f)->at_boundary () &&
+                cell->face (f)->boundary_id () == ids.inlet)
             {
               alpha_at_nodes.reinit (alpha_cell);
               alpha_at_nodes.get_function_values (alpha, alpha_values);
@@ -309,7 +310,8 @@ void TwoFluidSolver<dim>::make_flow_constraints (const double at_time)
                     flow_constraints.is_constrained (dofs[i]))
                   continue;
                 flow_constraints.add_line (dofs[i]);
-                flow_constraints.set_inhomogeneity (dofs[i], U / (1.0 - alpha_values[i]) * up[c]);
+                flow_constraints.set_inhomogeneity (dofs[i],
+                                                    U / (1.0 - alpha_values[i]) * up[c]);
               }
             }
         ++alpha_cell;
@@ -426,7 +428,8 @@ double TwoFluidSolver<dim>::hydrostatic_solids_fraction (const double height) co
   // alpha(P) the inverse of the (monotone) solids pressure, by RK4 in z
   const auto  &pp     = parameters.physical;
   const double weight = (pp.particle_density - pp.gas_density) * pp.gravity.norm ();
-  auto         alpha_of_pressure = [&] (const double P) {
+  auto         alpha_of_pressure = [&] (const double P)
+  {
     double lo = 0.0, hi = pp.maximum_packing;
     for (unsigned int k = 0; k < 200; ++k)
     {
@@ -481,7 +484,9 @@ bool TwoFluidSolver<dim>::try_time_step (const double dt, const unsigned int bdf
       {
         BlockVector owned (flow_owned, communicator);
         owned = flow_old;
-        owned.add (1.0, flow_solution);
+        BlockVector latest (flow_owned, communicator);
+        latest = flow_solution; // ghosted -> owned: Trilinos adds need equal maps
+        owned.add (1.0, latest);
         owned *= 0.5;
         velocity_for_transport = owned;
       }
@@ -511,9 +516,11 @@ bool TwoFluidSolver<dim>::try_time_step (const double dt, const unsigned int bdf
     lo = std::min (lo, alpha.local_element (i));
     hi = std::max (hi, alpha.local_element (i));
   }
-  lo                     = Utilities::MPI::min (lo, communicator);
-  hi                     = Utilities::MPI::max (hi, communicator);
-  const double flow_norm = flow_solution.l2_norm ();
+  lo = Utilities::MPI::min (lo, communicator);
+  hi = Utilities::MPI::max (hi, communicator);
+  BlockVector owned_solution (flow_owned, communicator);
+  owned_solution         = flow_solution; // norms need the non-ghosted layout
+  const double flow_norm = owned_solution.l2_norm ();
   if (!std::isfinite (flow_norm) || !std::isfinite (hi))
     return false;
   if (lo < -1e-10 || hi > parameters.physical.maximum_packing + 1e-10)

@@ -1,0 +1,107 @@
+#!/usr/bin/env python3
+"""Runs a .prm case with wetbed and checks its monitors.csv against physics.
+
+usage: case_checks.py CHECK WETBED SOURCE_DIR WORK_DIR
+CHECK: ergun | hydrostatic | settling | ranks | bubbling
+"""
+import csv
+import math
+import os
+import subprocess
+import sys
+
+check, wetbed, source, work = sys.argv[1], *(os.path.abspath(a) for a in sys.argv[2:5])
+os.makedirs(work, exist_ok=True)
+failures = []
+env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+
+
+def expect(condition, what):
+    print(("ok   " if condition else "FAIL ") + what)
+    if not condition:
+        failures.append(what)
+
+
+def run(case, overrides="", ranks=1, folder=None):
+    """Copies tests/cases/CASE.prm (or prm/CASE.prm) with absolute mesh paths and the
+    overrides appended, runs it, returns the monitors rows."""
+    path = os.path.join(source, "tests", "cases", case + ".prm")
+    if not os.path.isfile(path):
+        path = os.path.join(source, "prm", case + ".prm")
+    text = open(path).read().replace("../../meshes/", source + "/meshes/").replace("../meshes/", source + "/meshes/")
+    folder = folder or os.path.join(work, case)
+    text += f"\nsubsection output\n set folder = {folder}\n set field interval = 0\nend\n" + overrides
+    prm = os.path.join(work, os.path.basename(folder) + ".prm")
+    open(prm, "w").write(text)
+    command = [wetbed, prm] if ranks == 1 else ["mpirun", "--oversubscribe", "-np", str(ranks), wetbed, prm]
+    p = subprocess.run(command, capture_output=True, text=True, env=env)
+    if p.returncode != 0:
+        print(p.stdout[-2000:], p.stderr[-2000:])
+        expect(False, f"{case} ran (exit {p.returncode})")
+        sys.exit(1)
+    return [{k: float(v) for k, v in r.items()} for r in csv.DictReader(open(os.path.join(folder, "monitors.csv")))]
+
+
+def bounds_and_mass(rows, alpha_max, mass_tolerance=1e-12):
+    expect(all(r["alpha_s_min"] >= -1e-12 for r in rows), f"alpha_s >= 0 at every step (min {min(r['alpha_s_min'] for r in rows):.3e})")
+    expect(all(r["alpha_s_max"] <= alpha_max + 1e-12 for r in rows), f"alpha_s <= {alpha_max} at every step (max {max(r['alpha_s_max'] for r in rows):.12f})")
+    drift = max(abs(r["solids_mass_drift"]) for r in rows)
+    expect(drift <= mass_tolerance, f"solids mass constant (max relative drift {drift:.2e} <= {mass_tolerance})")
+    expect(all(math.isfinite(v) for r in rows for v in r.values()), "no NaN/Inf in the monitors")
+
+
+if check == "ergun":
+    # T8: -dp'/dz = 150 a_s^2 mu U/(a_g^3 d^2) + 1.75 a_s rho U^2/(a_g^3 d) over H = 0.3 m
+    rows = run("ergun_column")
+    a_s, a_g, U, mu, d, rho, H = 0.45, 0.55, 0.2, 1.8e-5, 350e-6, 1.2, 0.3
+    exact = H * (150 * a_s**2 * mu * U / (a_g**3 * d * d) + 1.75 * a_s * rho * U * U / (a_g**3 * d))
+    dp = rows[-1]["pressure_drop"]
+    expect(abs(dp / exact - 1) < 1e-10, f"Ergun pressure drop {dp:.12f} vs {exact:.12f} (rel. {abs(dp / exact - 1):.1e} < 1e-10)")
+    expect(abs(rows[-1]["gas_speed_max"] / (U / a_g) - 1) < 1e-10, "gas at U/alpha_g (superficial inflow U)")
+elif check == "hydrostatic":
+    # T7a: gas only at rest; p' = p - rho_g g.x must stay zero, no velocity appears
+    rows = run("hydrostatic_gas")
+    expect(max(abs(r["pressure_drop"]) for r in rows) < 1e-12, "p' stays zero")
+    expect(max(r["gas_speed_max"] for r in rows) < 1e-12, "gas stays at rest")
+elif check == "settling":
+    # T10: top interface of a settling suspension (alpha_0 = 0.1) vs the exact hindered
+    # settling speed of the Wen-Yu law; zero net volume flux: u_s = -alpha_g slip,
+    # beta slip = alpha_s alpha_g (rho_s - rho_g) g
+    rows = run("settling_column", "subsection time stepping\n set end time = 0.16\n set maximum time step = 2e-3\nend\n")
+    a_s, d, mu, rho_g, rho_s, g = 0.1, 100e-6, 1.8e-5, 1.2, 2500.0, 9.81
+    a_g = 1 - a_s
+    slip = 0.5
+    for _ in range(200):
+        re = a_g * rho_g * d * slip / mu
+        beta = 18 * mu * a_s * a_g**-2.65 * (1 + 0.15 * re**0.687) / d**2
+        slip = a_s * a_g * (rho_s - rho_g) * g / beta
+    speed = a_g * slip
+    # the 95% solids height sits 0.05 H0 (alpha_0 uniform) below the interface while the
+    # suspension is intact; fit its fall between t = 0.05 and 0.15 s
+    window = [r for r in rows if 0.05 <= r["time"] <= 0.15]
+    t0, t1 = window[0], window[-1]
+    measured = -(t1["bed_height"] - t0["bed_height"]) / (t1["time"] - t0["time"])
+    expect(abs(measured / speed - 1) < 0.05, f"interface speed {measured:.4f} m/s vs hindered settling {speed:.4f} m/s (within 5%)")
+    bounds_and_mass(rows, 0.61)
+elif check == "ranks":
+    # T13: 1 and 2 MPI ranks give the same monitors to solver tolerance
+    overrides = "subsection time stepping\n set end time = 0.02\nend\n"
+    one = run("bubbling_bed_2d", overrides, 1, os.path.join(work, "ranks_1"))
+    two = run("bubbling_bed_2d", overrides, 2, os.path.join(work, "ranks_2"))
+    expect(len(one) == len(two) and all(a["time"] == b["time"] for a, b in zip(one, two)), f"same time steps ({len(one)} rows)")
+    worst = max(abs(a["pressure_drop"] - b["pressure_drop"]) / abs(a["pressure_drop"]) for a, b in zip(one[1:], two[1:]))
+    expect(worst < 1e-4, f"pressure drop agrees (max rel. difference {worst:.1e} < 1e-4)")
+    worst = max(abs(a["alpha_s_max"] - b["alpha_s_max"]) for a, b in zip(one, two))
+    expect(worst < 1e-6, f"max alpha_s agrees (max difference {worst:.1e} < 1e-6)")
+    expect(all(abs(a["solids_mass"] - b["solids_mass"]) <= 1e-12 * a["solids_mass"] for a, b in zip(one, two)), "solids mass identical")
+elif check == "bubbling":
+    # the default case, first 0.05 s: runs, bounded, conservative, the bed lifts
+    rows = run("bubbling_bed_2d", "subsection time stepping\n set end time = 0.05\nend\n")
+    bounds_and_mass(rows, 0.61, 1e-10)
+    expect(rows[-1]["time"] >= 0.05 - 1e-12, "reached t = 0.05 s")
+    expect(max(r["fluidization_index"] for r in rows[1:]) > 1.0, "the gas carries the bed (FI > 1 at start-up)")
+else:
+    sys.exit(f"unknown check {check}")
+
+print(f"{check}: {'all checks passed' if not failures else 'checks failed'}")
+sys.exit(1 if failures else 0)
