@@ -148,7 +148,8 @@ void SolidsStressParameters::declare_parameters (ParameterHandler &prm)
   prm.declare_entry ("model",
                      "constant viscosity",
                      Selection (closures::solids_stress_model_names ()),
-                     "Rheology of the particle phase.");
+                     "Rheology of the particle phase, one of: " +
+                         closures::solids_stress_model_names () + ".");
   prm.declare_entry ("shear viscosity", "0.5", Double (), "mu_s (Pa s), constant model.");
   prm.declare_entry ("frictional coefficient", "0.05", Double (), "Fr (Pa).");
   prm.declare_entry (
@@ -446,7 +447,7 @@ void Parameters::declare_parameters (ParameterHandler &prm)
   prm.declare_entry ("model",
                      "Syamlal-O'Brien",
                      Selection (closures::drag_model_names ()),
-                     "Gas-solid drag law.");
+                     "Gas-solid drag law, one of: " + closures::drag_model_names () + ".");
   prm.leave_subsection ();
   SolidsStressParameters::declare_parameters (prm);
   prm.enter_subsection ("stabilization");
