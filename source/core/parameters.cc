@@ -447,7 +447,8 @@ void Parameters::declare_parameters (ParameterHandler &prm)
   prm.declare_entry ("model",
                      "Syamlal-O'Brien",
                      Selection (closures::drag_model_names ()),
-                     "Gas-solid drag law, one of: " + closures::drag_model_names () + ".");
+                     "Gas-solid drag law, one of: " + closures::drag_model_names () +
+                         ".");
   prm.leave_subsection ();
   SolidsStressParameters::declare_parameters (prm);
   prm.enter_subsection ("stabilization");

@@ -8,43 +8,6 @@ namespace wetbed
 {
 using namespace dealii;
 
-namespace
-{
-/** A manufactured field as a deal.II Function on the flow system's components. */
-template <int dim>
-class ExactFlow : public Function<dim>
-{
-public:
-  ExactFlow (const ManufacturedSolution<dim> &m) : Function<dim> (2 * dim + 1), m (m) {}
-  double value (const Point<dim> &x, const unsigned int c) const override
-  {
-    if (c < dim)
-      return m.gas_velocity (x)[c];
-    if (c < 2 * dim)
-      return m.solids_velocity (x)[c - dim];
-    return m.pressure (x);
-  }
-  /** Central difference of the analytic field (error ~1e-10, far below the
-   * discretisation errors measured with it). */
-  Tensor<1, dim> gradient (const Point<dim> &x, const unsigned int c) const override
-  {
-    const double   h = 1e-6;
-    Tensor<1, dim> g;
-    for (unsigned int d = 0; d < dim; ++d)
-    {
-      Point<dim> plus = x, minus = x;
-      plus[d] += h;
-      minus[d] -= h;
-      g[d] = (value (plus, c) - value (minus, c)) / (2 * h);
-    }
-    return g;
-  }
-
-private:
-  const ManufacturedSolution<dim> &m;
-};
-} // namespace
-
 /** Writes u_g, u_s, p', alpha_s, alpha_g as VTU pieces with a PVTU record. */
 template <int dim>
 void TwoFluidSolver<dim>::write_fields () const
@@ -83,10 +46,10 @@ template <int dim>
 typename TwoFluidSolver<dim>::Errors TwoFluidSolver<dim>::compute_errors () const
 {
   Assert (manufactured, ExcMessage ("no manufactured solution attached"));
-  const ExactFlow<dim> exact (*manufactured);
-  const QGauss<dim>    quadrature (5);
-  Vector<float>        cellwise (triangulation.n_active_cells ());
-  auto                 norm = [&] (const unsigned int          first,
+  const ManufacturedFlowFunction<dim> exact (*manufactured);
+  const QGauss<dim>                   quadrature (5);
+  Vector<float>                       cellwise (triangulation.n_active_cells ());
+  auto                                norm = [&] (const unsigned int          first,
                    const unsigned int          count,
                    const VectorTools::NormType type)
   {

@@ -21,32 +21,6 @@ namespace wetbed
 {
 using namespace dealii;
 
-namespace
-{
-/** Constant vector function on `n_components`, nonzero only in [first, first+dim). */
-/** The manufactured velocities as a flow-system function (for boundary values). */
-template <int dim>
-class ManufacturedFlow : public Function<dim>
-{
-public:
-  ManufacturedFlow (const ManufacturedSolution<dim> &m)
-      : Function<dim> (2 * dim + 1), m (m)
-  {
-  }
-  double value (const Point<dim> &x, const unsigned int c) const override
-  {
-    if (c < dim)
-      return m.gas_velocity (x)[c];
-    if (c < 2 * dim)
-      return m.solids_velocity (x)[c - dim];
-    return m.pressure (x);
-  }
-
-private:
-  const ManufacturedSolution<dim> &m;
-};
-} // namespace
-
 template <int dim>
 TwoFluidSolver<dim>::TwoFluidSolver (const Parameters &parameters, MPI_Comm communicator)
     : parameters (parameters), communicator (communicator),
@@ -223,8 +197,8 @@ void TwoFluidSolver<dim>::make_flow_constraints (const double at_time)
   if (manufactured)
   {
     // verification: exact velocities on inlet and walls, traction on the outlet
-    ManufacturedFlow<dim> exact (*manufactured);
-    ComponentMask         velocities (2 * dim + 1, true);
+    const ManufacturedFlowFunction<dim> exact (*manufactured);
+    ComponentMask                       velocities (2 * dim + 1, true);
     velocities.set (2 * dim, false);
     for (const auto id : {ids.wall, ids.inlet})
       VectorTools::interpolate_boundary_values (
@@ -235,13 +209,7 @@ void TwoFluidSolver<dim>::make_flow_constraints (const double at_time)
     const auto &bc = parameters.boundary;
     if (bc.hold_solids)
     {
-      const std::vector<IndexSet> by_component =
-          DoFTools::locally_owned_dofs_per_component (flow_dof_handler);
-      for (unsigned int c = dim; c < 2 * dim; ++c)
-        for (const auto i : by_component[c])
-          if (!flow_constraints.is_constrained (i))
-            flow_constraints.add_line (i);
-      // also the ghost dofs of the solids components
+      // every solids dof on owned and ghost cells
       std::vector<types::global_dof_index> dofs (flow_fe.n_dofs_per_cell ());
       for (const auto &cell : flow_dof_handler.active_cell_iterators ())
         if (cell->is_locally_owned () || cell->is_ghost ())
@@ -256,28 +224,24 @@ void TwoFluidSolver<dim>::make_flow_constraints (const double at_time)
         }
     }
     // walls first: their constraints take precedence at the corners
-    if (bc.solids_wall == WallCondition::no_slip)
-      VectorTools::interpolate_boundary_values (
-          mapping,
-          flow_dof_handler,
-          ids.wall,
-          Functions::ZeroFunction<dim> (2 * dim + 1),
-          flow_constraints,
-          solids_mask);
-    else
-      VectorTools::compute_no_normal_flux_constraints (
-          flow_dof_handler, dim, {ids.wall}, flow_constraints, mapping);
-    if (bc.gas_wall == WallCondition::no_slip)
-      VectorTools::interpolate_boundary_values (
-          mapping,
-          flow_dof_handler,
-          ids.wall,
-          Functions::ZeroFunction<dim> (2 * dim + 1),
-          flow_constraints,
-          gas_mask);
-    else
-      VectorTools::compute_no_normal_flux_constraints (
-          flow_dof_handler, 0, {ids.wall}, flow_constraints, mapping);
+    auto wall = [&] (const unsigned int   first,
+                     const WallCondition  condition,
+                     const ComponentMask &mask)
+    {
+      if (condition == WallCondition::no_slip)
+        VectorTools::interpolate_boundary_values (
+            mapping,
+            flow_dof_handler,
+            ids.wall,
+            Functions::ZeroFunction<dim> (2 * dim + 1),
+            flow_constraints,
+            mask);
+      else
+        VectorTools::compute_no_normal_flux_constraints (
+            flow_dof_handler, first, {ids.wall}, flow_constraints, mapping);
+    };
+    wall (dim, bc.solids_wall, solids_mask);
+    wall (0, bc.gas_wall, gas_mask);
     // inlet: the gas enters against gravity with the superficial velocity U, i.e. at
     // U/alpha_g with the local gas fraction at each node, so the volume flux is U
     // whatever bed sits on the distributor; solids are held at the distributor and
@@ -386,8 +350,10 @@ void TwoFluidSolver<dim>::set_initial_state ()
 
   TrilinosWrappers::MPI::BlockVector owned_flow (flow_owned, communicator);
   if (manufactured)
-    VectorTools::interpolate (
-        mapping, flow_dof_handler, ManufacturedFlow<dim> (*manufactured), owned_flow);
+    VectorTools::interpolate (mapping,
+                              flow_dof_handler,
+                              ManufacturedFlowFunction<dim> (*manufactured),
+                              owned_flow);
   else if (ic.gas_at_inlet_velocity)
   {
     // u_g = U/alpha_g (the superficial velocity carried by the local gas fraction)
