@@ -7,12 +7,33 @@ namespace wetbed
 {
 using namespace dealii;
 
+template <int dim>
+void TwoFluidSolver<dim>::build_velocity_preconditioner (const double current_dt)
+{
+  ComponentMask velocities (2 * dim + 1, true);
+  velocities.set (2 * dim, false);
+  std::vector<std::vector<bool>> modes;
+  DoFTools::extract_constant_modes (flow_dof_handler, velocities, modes);
+  // the pressure entries are not part of block 0: keep the velocity rows
+  std::vector<std::vector<bool>> velocity_modes (modes.size ());
+  const unsigned int             n_velocity = flow_owned[0].n_elements ();
+  for (unsigned int m = 0; m < modes.size (); ++m)
+    velocity_modes[m].assign (modes[m].begin (), modes[m].begin () + n_velocity);
+  preconditioner->build_velocity (flow_matrix.block (0, 0), velocity_modes);
+  solves_since_build     = 0;
+  iterations_after_build = 0;
+  dt_at_build            = current_dt;
+}
+
 /**
  * FGMRES on the monolithic (u_g, u_s, p') system with the block preconditioner. The
- * Schur AMG is rebuilt every solve (it is cheap, Q1); the velocity AMG is reused
- * while the iteration count stays within `rebuild growth` of the count right after
- * its last build and for at most `rebuild interval` solves. Returns the iterations,
- * or invalid_unsigned_int when the solve failed (the step is then rejected).
+ * Schur AMG is rebuilt every solve (it is cheap, Q1). The velocity AMG is rebuilt after
+ * `rebuild interval` solves, when dt changed by more than 20%, or when the iterations
+ * grew beyond `rebuild growth` times those right after its build. A solve with a reused
+ * hierarchy gets at most 3x those iterations (+10): if it misses that, the hierarchy is
+ * rebuilt and the same solve is repeated, so reuse never costs a rejected step.
+ * Returns the iterations, or invalid_unsigned_int when the solve failed with a fresh
+ * hierarchy (the step is then rejected).
  */
 template <int dim>
 unsigned int TwoFluidSolver<dim>::solve_flow_system (const double current_dt)
@@ -22,58 +43,62 @@ unsigned int TwoFluidSolver<dim>::solve_flow_system (const double current_dt)
     TimerOutput::Scope scope (timer, "preconditioner setup");
     if (solves_since_build >= ls.rebuild_interval ||
         std::abs (current_dt / dt_at_build - 1.0) > 0.2)
-    {
-      ComponentMask velocities (2 * dim + 1, true);
-      velocities.set (2 * dim, false);
-      std::vector<std::vector<bool>> modes;
-      DoFTools::extract_constant_modes (flow_dof_handler, velocities, modes);
-      // the pressure entries are not part of block 0: keep the velocity rows
-      std::vector<std::vector<bool>> velocity_modes (modes.size ());
-      const unsigned int             n_velocity = flow_owned[0].n_elements ();
-      for (unsigned int m = 0; m < modes.size (); ++m)
-        velocity_modes[m].assign (modes[m].begin (), modes[m].begin () + n_velocity);
-      preconditioner->build_velocity (flow_matrix.block (0, 0), velocity_modes);
-      solves_since_build     = 0;
-      iterations_after_build = 0;
-      dt_at_build            = current_dt;
-    }
+      build_velocity_preconditioner (current_dt);
     preconditioner->build_schur (schur_matrix.block (1, 1));
   }
 
-  TimerOutput::Scope scope (timer, "Krylov solve");
-  BlockVector        solution (flow_owned, communicator);
-  solution = flow_solution; // lagged iterate as the initial guess
-  flow_constraints.set_zero (solution);
-  const double              target = ls.relative_tolerance * flow_rhs.l2_norm ();
-  SolverControl             control (ls.maximum_iterations, std::max (target, 1e-300));
-  SolverFGMRES<BlockVector> fgmres (
-      control, typename SolverFGMRES<BlockVector>::AdditionalData (ls.restart));
-  try
+  const double target = ls.relative_tolerance * flow_rhs.l2_norm ();
+  BlockVector  solution (flow_owned, communicator);
+  unsigned int spent = 0;
+  for (unsigned int attempt = 0; attempt < 2; ++attempt)
   {
-    fgmres.solve (flow_matrix, solution, flow_rhs, *preconditioner);
+    const bool         reused = solves_since_build > 0;
+    const unsigned int limit =
+        reused ? std::min (ls.maximum_iterations, 3 * iterations_after_build + 10)
+               : ls.maximum_iterations;
+    TimerOutput::Scope scope (timer, "Krylov solve");
+    solution = flow_solution; // lagged iterate as the initial guess
+    flow_constraints.set_zero (solution);
+    SolverControl             control (limit, std::max (target, 1e-300));
+    SolverFGMRES<BlockVector> fgmres (
+        control, typename SolverFGMRES<BlockVector>::AdditionalData (ls.restart));
+    try
+    {
+      fgmres.solve (flow_matrix, solution, flow_rhs, *preconditioner);
+    }
+    catch (const SolverControl::NoConvergence &)
+    {
+      spent += control.last_step ();
+      if (reused)
+      {
+        TimerOutput::Scope setup (timer, "preconditioner setup");
+        build_velocity_preconditioner (current_dt);
+        continue;
+      }
+      solves_since_build = ls.rebuild_interval;
+      pcout << "  FGMRES did not converge in " << control.last_step ()
+            << " iterations (residual " << control.last_value () << ", target " << target
+            << ")" << std::endl;
+      return numbers::invalid_unsigned_int;
+    }
+    const unsigned int iterations = control.last_step ();
+    if (ls.verbose)
+      pcout << "    FGMRES " << iterations << " iterations"
+            << (reused ? " (reused AMG)" : "") << std::endl;
+    flow_constraints.distribute (solution);
+    flow_solution = solution;
+    ++solves_since_build;
+    if (iterations_after_build == 0)
+      iterations_after_build = std::max (1u, iterations);
+    else if (iterations > ls.rebuild_growth * iterations_after_build)
+      solves_since_build = ls.rebuild_interval;
+    return iterations + spent;
   }
-  catch (const SolverControl::NoConvergence &)
-  {
-    solves_since_build = ls.rebuild_interval;
-    pcout << "  FGMRES did not converge in " << control.last_step ()
-          << " iterations (residual " << control.last_value () << ", target " << target
-          << ")" << std::endl;
-    return numbers::invalid_unsigned_int;
-  }
-  const unsigned int iterations = control.last_step ();
-  if (ls.verbose)
-    pcout << "    FGMRES " << iterations << " iterations" << std::endl;
-  flow_constraints.distribute (solution);
-  flow_solution = solution;
-
-  ++solves_since_build;
-  if (iterations_after_build == 0)
-    iterations_after_build = std::max (1u, iterations);
-  else if (iterations > ls.rebuild_growth * iterations_after_build)
-    solves_since_build = ls.rebuild_interval;
-  return iterations;
+  return numbers::invalid_unsigned_int;
 }
 
 template unsigned int TwoFluidSolver<2>::solve_flow_system (double);
 template unsigned int TwoFluidSolver<3>::solve_flow_system (double);
+template void         TwoFluidSolver<2>::build_velocity_preconditioner (double);
+template void         TwoFluidSolver<3>::build_velocity_preconditioner (double);
 } // namespace wetbed

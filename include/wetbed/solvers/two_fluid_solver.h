@@ -87,6 +87,7 @@ private:
 
   // linear solve (source/solvers/flow_linear_solve.cc)
   unsigned int solve_flow_system (double dt);
+  void         build_velocity_preconditioner (double dt);
 
   // postprocessing (source/postprocess/)
   MonitorRow evaluate_monitors () const;
