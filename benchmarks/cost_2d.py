@@ -9,23 +9,33 @@ usage: python3 benchmarks/cost_2d.py [--end-time 0.05] [--ranks 2] [--levels 0 1
 """
 import argparse
 import csv
+import json
 import os
 import re
 import subprocess
+import sys
+
+try:
+    import matplotlib  # Debian's python3-matplotlib lives with /usr/bin/python3
+except ImportError:
+    if os.path.exists("/usr/bin/python3") and os.path.realpath(sys.executable) != "/usr/bin/python3":
+        os.execv("/usr/bin/python3", ["/usr/bin/python3"] + sys.argv)
 
 root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 parser = argparse.ArgumentParser()
 parser.add_argument("--end-time", type=float, default=0.05)
 parser.add_argument("--ranks", type=int, default=2)
 parser.add_argument("--levels", type=int, nargs="+", default=[0, 1, 2])
+parser.add_argument("--replot", action="store_true", help="redraw from the cached results.json")
 args = parser.parse_args()
 
 work = os.path.join(root, "build", "benchmarks", "cost_2d")
 os.makedirs(work, exist_ok=True)
 env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
 base = open(os.path.join(root, "prm", "bubbling_bed_2d.prm")).read().replace("../meshes/", root + "/meshes/")
+cache = os.path.join(work, "results.json")
 results = []
-for level in args.levels:
+for level in ([] if args.replot else args.levels):
     folder = os.path.join(work, f"level_{level}")
     prm = os.path.join(work, f"level_{level}.prm")
     open(prm, "w").write(base + f"""
@@ -61,6 +71,12 @@ end
           f"wall {wall:.1f} s, {per_second:.0f} s per simulated s, {per_cell:.0f} us/cell/step, "
           f"FGMRES {per_solve:.1f} iterations per solve")
 
+if args.replot:
+    saved = json.load(open(cache))
+    results, args.end_time, args.ranks = saved["results"], saved["end_time"], saved["ranks"]
+else:
+    json.dump({"results": results, "end_time": args.end_time, "ranks": args.ranks}, open(cache, "w"))
+
 names = ["flow assembly", "preconditioner setup", "Krylov solve", "alpha transport", "solids pressure correction", "monitors", "output"]
 lines = [f"Command: `python3 benchmarks/cost_2d.py --end-time {args.end_time} --ranks {args.ranks}` "
          f"(`prm/bubbling_bed_2d.prm` at three uniform refinements, first {args.end_time} s simulated, "
@@ -81,11 +97,13 @@ try:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     fig, ax = plt.subplots(figsize=(7, 4))
-    bottom = [0.0] * len(results)
+    cells = [r["cells"] for r in results]
+    ax.plot(cells, [r["per_second"] for r in results], "k-o", label="total")
     for n in names:
         values = [r["sections"].get(n, (0, 0))[1] / max(r["wall"], 1e-9) * r["per_second"] for r in results]
-        ax.bar([str(r["cells"]) for r in results], values, bottom=bottom, label=n)
-        bottom = [b + v for b, v in zip(bottom, values)]
+        if max(values) > 0:
+            ax.plot(cells, [max(v, 1e-3) for v in values], "-o", label=n)
+    ax.set_xscale("log")
     ax.set_xlabel("cells")
     ax.set_ylabel("wall s per simulated s")
     ax.set_yscale("log")
