@@ -34,6 +34,9 @@ void VolumeFractionTransport<dim>::setup (const dealii::DoFHandler<dim> &dof_han
     ct[d].reinit (owned, owned, dsp, comm);
   }
   mass.reinit (layout);
+  scratch_low.reinit (layout);
+  scratch_plus.reinit (layout);
+  scratch_minus.reinit (layout);
 
   const QGauss<dim>                    quadrature (dof_handler.get_fe ().degree + 1);
   FEValues<dim>                        fe_values (mapping,
@@ -147,7 +150,7 @@ unsigned int VolumeFractionTransport<dim>::advance (Vector                    &a
       std::max (1u, static_cast<unsigned int> (std::ceil (dt / (cfl * stable_dt))));
   const double tau = dt / n_sub;
 
-  Vector low (alpha), r_plus (alpha), r_minus (alpha);
+  Vector &low = scratch_low, &r_plus = scratch_plus, &r_minus = scratch_minus;
   // per edge: low-order flux F^L_ij (into i), antidiffusive flux f_ij, then their sum
   std::vector<std::vector<double>> low_flux (n_owned), flux (n_owned);
   double                           removed = 0, total = 0;
@@ -255,7 +258,7 @@ double VolumeFractionTransport<dim>::limit_to_bounds (
   // total fluxes into a node never lift it above alpha_max, out of it never below 0.
   // l_ij = l_ji, so the update stays exactly conservative.
   const unsigned int n_owned = rows.size ();
-  Vector             r_plus (alpha), r_minus (alpha);
+  Vector            &r_plus = scratch_plus, &r_minus = scratch_minus;
   for (unsigned int i = 0; i < n_owned; ++i)
   {
     double p_plus = 0, p_minus = 0;

@@ -13,6 +13,7 @@
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
@@ -317,7 +318,20 @@ void TwoFluidSolver<dim>::set_initial_state ()
   up /= up.norm ();
 
   // solids fraction at the vertices (Q1 nodes)
-  const Point<dim>                     origin;
+  const Point<dim>          origin;
+  const unsigned int        profile_points = 4000;
+  const std::vector<double> profile =
+      ic.hydrostatic_bed ? hydrostatic_profile (profile_points) : std::vector<double> ();
+  auto hydrostatic_fraction = [&] (const double height)
+  {
+    // linear interpolation in the tabulated profile (depth below the bed top)
+    const double position =
+        std::clamp ((ic.bed_height - height) / ic.bed_height, 0.0, 1.0) * profile_points;
+    const unsigned int k =
+        std::min (static_cast<unsigned int> (position), profile_points - 1);
+    const double w = position - k;
+    return (1 - w) * profile[k] + w * profile[k + 1];
+  };
   std::vector<types::global_dof_index> dofs (alpha_fe.n_dofs_per_cell ());
   for (const auto &cell : alpha_dof_handler.active_cell_iterators ())
     if (cell->is_locally_owned ())
@@ -333,7 +347,7 @@ void TwoFluidSolver<dim>::set_initial_state ()
         {
           const double height = (x - origin) * up;
           if (ic.hydrostatic_bed)
-            value = height <= ic.bed_height + 1e-12 ? hydrostatic_solids_fraction (height)
+            value = height <= ic.bed_height + 1e-12 ? hydrostatic_fraction (height)
                                                     : ic.freeboard_solids_fraction;
           else
             value = height <= ic.bed_height + 1e-12 ? ic.bed_solids_fraction
@@ -388,26 +402,27 @@ void TwoFluidSolver<dim>::set_initial_state ()
 }
 
 template <int dim>
-double TwoFluidSolver<dim>::hydrostatic_solids_fraction (const double height) const
+std::vector<double> TwoFluidSolver<dim>::hydrostatic_profile (const unsigned int n) const
 {
-  // integrate dP/dz = -alpha(P) (rho_s - rho_g) |g| downward from P = 0 at the bed top,
-  // alpha(P) the inverse of the (monotone) solids pressure, by RK4 in z
+  // integrate dP/dz = -alpha(P) (rho_s - rho_g) |g| downward from P = 0 at the bed top
+  // once, by RK4 in z; alpha(P) the inverse of the (monotone) solids pressure. Entry k is
+  // alpha_s at depth k H/n below the bed top.
   const auto  &pp     = parameters.physical;
   const double weight = (pp.particle_density - pp.gas_density) * pp.gravity.norm ();
   auto         alpha_of_pressure = [&] (const double P)
   {
     double lo = 0.0, hi = pp.maximum_packing;
-    for (unsigned int k = 0; k < 200; ++k)
+    for (unsigned int k = 0; k < 60; ++k)
     {
       const double mid = 0.5 * (lo + hi);
       (solids_stress->evaluate ({mid, 0.0, 0.0}).pressure < P ? lo : hi) = mid;
     }
     return 0.5 * (lo + hi);
   };
-  const double       depth = parameters.initial.bed_height - height;
-  const unsigned int n     = 2000;
-  const double       dz    = depth / n;
-  double             P     = 0;
+  const double        dz = parameters.initial.bed_height / n;
+  double              P  = 0;
+  std::vector<double> profile (n + 1);
+  profile[0] = alpha_of_pressure (0.0);
   for (unsigned int k = 0; k < n; ++k)
   {
     const double k1 = weight * alpha_of_pressure (P);
@@ -415,8 +430,9 @@ double TwoFluidSolver<dim>::hydrostatic_solids_fraction (const double height) co
     const double k3 = weight * alpha_of_pressure (P + 0.5 * dz * k2);
     const double k4 = weight * alpha_of_pressure (P + dz * k3);
     P += dz / 6.0 * (k1 + 2 * k2 + 2 * k3 + k4);
+    profile[k + 1] = alpha_of_pressure (P);
   }
-  return alpha_of_pressure (P);
+  return profile;
 }
 
 template <int dim>

@@ -72,5 +72,7 @@ private:
   };
   std::vector<Row> rows; // one per locally owned dof, in local order
   Vector           mass;
+  // work vectors of one sub-step (ghosted), allocated with the graph
+  Vector scratch_low, scratch_plus, scratch_minus;
 };
 } // namespace wetbed

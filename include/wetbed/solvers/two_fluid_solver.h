@@ -95,7 +95,8 @@ private:
 
   double inlet_superficial_velocity (double t) const;
   double solids_mass (const AlphaVector &alpha) const;
-  double hydrostatic_solids_fraction (double height) const;
+  /** alpha_s of a packed bed at rest at n + 1 equidistant depths below the bed top. */
+  std::vector<double> hydrostatic_profile (unsigned int n) const;
 
   const Parameters            parameters;
   MPI_Comm                    communicator;
