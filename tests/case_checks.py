@@ -2,7 +2,7 @@
 """Runs a .prm case with wetbed and checks its monitors.csv against physics.
 
 usage: case_checks.py CHECK WETBED SOURCE_DIR WORK_DIR
-CHECK: ergun | hydrostatic | settling | ranks | bubbling
+CHECK: ergun | hydrostatic | packed | settling | ranks | bubbling
 """
 import csv
 import math
@@ -58,6 +58,14 @@ if check == "ergun":
     dp = rows[-1]["pressure_drop"]
     expect(abs(dp / exact - 1) < 1e-10, f"Ergun pressure drop {dp:.12f} vs {exact:.12f} (rel. {abs(dp / exact - 1):.1e} < 1e-10)")
     expect(abs(rows[-1]["gas_speed_max"] / (U / a_g) - 1) < 1e-10, "gas at U/alpha_g (superficial inflow U)")
+elif check == "packed":
+    # T7b: a packed bed (JJ frictional pressure, seed values) at rest for 0.2 s
+    rows = run("packed_bed_at_rest")
+    speed = max(max(r["solids_speed_max"], r["gas_speed_max"]) for r in rows)
+    expect(speed < 1e-5, f"spurious velocity {speed:.2e} m/s < 1e-5 at every step")
+    expect(rows[-1]["time"] >= 0.2 - 1e-12, "ran to t = 0.2 s")
+    expect(all(r["rejected_steps"] == 0 for r in rows), "no rejected steps")
+    bounds_and_mass(rows, 0.61)
 elif check == "hydrostatic":
     # T7a: gas only at rest; p' = p - rho_g g.x must stay zero, no velocity appears
     rows = run("hydrostatic_gas")

@@ -27,63 +27,31 @@ void VolumeFractionTransport<dim>::setup (const dealii::DoFHandler<dim> &dof_han
   DoFTools::make_sparsity_pattern (dof_handler, dsp);
   SparsityTools::distribute_sparsity_pattern (dsp, owned, comm, relevant);
 
-  std::vector<TrilinosWrappers::SparseMatrix> c (dim), ct (dim);
-  for (unsigned int d = 0; d < dim; ++d)
-  {
-    c[d].reinit (owned, owned, dsp, comm);
-    ct[d].reinit (owned, owned, dsp, comm);
-  }
+  this->dof_handler = &dof_handler;
+  this->mapping     = &mapping;
+  convection.reinit (owned, owned, dsp, comm);
+  convection_transpose.reinit (owned, owned, dsp, comm);
   mass.reinit (layout);
   scratch_low.reinit (layout);
   scratch_plus.reinit (layout);
   scratch_minus.reinit (layout);
 
-  const QGauss<dim>                    quadrature (dof_handler.get_fe ().degree + 1);
-  FEValues<dim>                        fe_values (mapping,
-                           dof_handler.get_fe (),
-                           quadrature,
-                           update_values | update_gradients | update_JxW_values);
+  const QGauss<dim> quadrature (dof_handler.get_fe ().degree + 1);
+  FEValues<dim>     fe_values (
+      mapping, dof_handler.get_fe (), quadrature, update_values | update_JxW_values);
   const unsigned int                   n = dof_handler.get_fe ().n_dofs_per_cell ();
   std::vector<types::global_dof_index> dofs (n);
-  std::vector<FullMatrix<double>>      cell_c (dim, FullMatrix<double> (n, n));
-  std::vector<FullMatrix<double>>      cell_ct (dim, FullMatrix<double> (n, n));
-  Vector                               cell_mass_dummy;
   for (const auto &cell : dof_handler.active_cell_iterators ())
     if (cell->is_locally_owned ())
     {
       fe_values.reinit (cell);
       cell->get_dof_indices (dofs);
-      for (unsigned int d = 0; d < dim; ++d)
-      {
-        cell_c[d]  = 0;
-        cell_ct[d] = 0;
-      }
       for (unsigned int q = 0; q < quadrature.size (); ++q)
         for (unsigned int i = 0; i < n; ++i)
-        {
           mass (dofs[i]) += fe_values.shape_value (i, q) * fe_values.JxW (q);
-          for (unsigned int j = 0; j < n; ++j)
-            for (unsigned int d = 0; d < dim; ++d)
-            {
-              cell_c[d](i, j) += fe_values.shape_value (j, q) *
-                                 fe_values.shape_grad (i, q)[d] * fe_values.JxW (q);
-              cell_ct[d](i, j) += fe_values.shape_value (i, q) *
-                                  fe_values.shape_grad (j, q)[d] * fe_values.JxW (q);
-            }
-        }
-      for (unsigned int d = 0; d < dim; ++d)
-      {
-        c[d].add (dofs, cell_c[d]);
-        ct[d].add (dofs, cell_ct[d]);
-      }
     }
   mass.compress (VectorOperation::add);
   mass.update_ghost_values ();
-  for (unsigned int d = 0; d < dim; ++d)
-  {
-    c[d].compress (VectorOperation::add);
-    ct[d].compress (VectorOperation::add);
-  }
 
   const auto &partitioner = *layout.get_partitioner ();
   rows.assign (owned.n_elements (), Row ());
@@ -91,48 +59,87 @@ void VolumeFractionTransport<dim>::setup (const dealii::DoFHandler<dim> &dof_han
   for (const auto global_row : owned)
   {
     Row &row = rows[local_row++];
-    for (unsigned int d = 0; d < dim; ++d)
+    for (auto it = convection.begin (global_row); it != convection.end (global_row); ++it)
+      row.columns.push_back (partitioner.global_to_local (it->column ()));
+    row.k.assign (row.columns.size (), 0.0);
+    row.kt.assign (row.columns.size (), 0.0);
+  }
+}
+
+template <int dim>
+void VolumeFractionTransport<dim>::set_velocity (const VelocityAtQuadrature &velocity)
+{
+  using namespace dealii;
+  convection           = 0;
+  convection_transpose = 0;
+  // phi_j (Q1) u (Q2) grad phi_i (Q1) is of degree 3 per direction: 3 Gauss points
+  const QGauss<dim>                    quadrature (dof_handler->get_fe ().degree + 2);
+  FEValues<dim>                        fe_values (*mapping,
+                           dof_handler->get_fe (),
+                           quadrature,
+                           update_values | update_gradients | update_JxW_values |
+                               update_quadrature_points);
+  const unsigned int                   n = dof_handler->get_fe ().n_dofs_per_cell ();
+  std::vector<types::global_dof_index> dofs (n);
+  std::vector<Tensor<1, dim>>          u (quadrature.size ());
+  FullMatrix<double>                   cell_k (n, n), cell_kt (n, n);
+  for (const auto &cell : dof_handler->active_cell_iterators ())
+    if (cell->is_locally_owned ())
     {
-      auto it_t = ct[d].begin (global_row);
-      for (auto it = c[d].begin (global_row); it != c[d].end (global_row); ++it, ++it_t)
-      {
-        if (d == 0)
-          row.columns.push_back (partitioner.global_to_local (it->column ()));
-        row.c[d].push_back (it->value ());
-        row.ct[d].push_back (it_t->value ());
-      }
+      fe_values.reinit (cell);
+      cell->get_dof_indices (dofs);
+      velocity (cell, fe_values, u);
+      cell_k = 0;
+      for (unsigned int q = 0; q < quadrature.size (); ++q)
+        for (unsigned int i = 0; i < n; ++i)
+        {
+          const double advective_derivative =
+              (u[q] * fe_values.shape_grad (i, q)) * fe_values.JxW (q);
+          for (unsigned int j = 0; j < n; ++j)
+            cell_k (i, j) += fe_values.shape_value (j, q) * advective_derivative;
+        }
+      cell_kt.copy_transposed (cell_k);
+      convection.add (dofs, cell_k);
+      convection_transpose.add (dofs, cell_kt);
+    }
+  convection.compress (VectorOperation::add);
+  convection_transpose.compress (VectorOperation::add);
+  const auto  &owned     = dof_handler->locally_owned_dofs ();
+  unsigned int local_row = 0;
+  for (const auto global_row : owned)
+  {
+    Row         &row  = rows[local_row++];
+    auto         it_t = convection_transpose.begin (global_row);
+    unsigned int e    = 0;
+    for (auto it = convection.begin (global_row); it != convection.end (global_row);
+         ++it, ++it_t, ++e)
+    {
+      row.k[e]  = it->value ();
+      row.kt[e] = it_t->value ();
     }
   }
 }
 
 template <int dim>
-unsigned int VolumeFractionTransport<dim>::advance (Vector                    &alpha,
-                                                    const std::vector<Vector> &u,
-                                                    const double               dt,
-                                                    const double               cfl,
-                                                    const double               alpha_max)
+unsigned int VolumeFractionTransport<dim>::advance (Vector      &alpha,
+                                                    const double dt,
+                                                    const double cfl,
+                                                    const double alpha_max)
 {
   const unsigned int n_owned = rows.size ();
-  // k_ij = u_j . c_ij, k_ji = u_i . ct_ij, d_ij = max(-k_ij, 0, -k_ji)
-  std::vector<std::vector<double>> k (n_owned), diffusion (n_owned);
+  // d_ij = max(-k_ij, 0, -k_ji)
+  std::vector<std::vector<double>> diffusion (n_owned);
   double                           stable_dt = std::numeric_limits<double>::max ();
   for (unsigned int i = 0; i < n_owned; ++i)
   {
     const Row &row = rows[i];
     const auto m   = row.columns.size ();
-    k[i].resize (m);
     diffusion[i].resize (m);
     double diagonal = 0, off_diagonal_sum = 0;
     for (unsigned int e = 0; e < m; ++e)
     {
       const unsigned int j   = row.columns[e];
-      double             kij = 0, kji = 0;
-      for (unsigned int d = 0; d < dim; ++d)
-      {
-        kij += u[d].local_element (j) * row.c[d][e];
-        kji += u[d].local_element (i) * row.ct[d][e];
-      }
-      k[i][e] = kij;
+      const double       kij = row.k[e], kji = row.kt[e];
       if (j == i)
         diagonal = kij;
       else
@@ -172,11 +179,8 @@ unsigned int VolumeFractionTransport<dim>::advance (Vector                    &a
         if (j == i)
           continue;
         const double a_j = alpha.local_element (j);
-        double       kji = 0;
-        for (unsigned int d = 0; d < dim; ++d)
-          kji += u[d].local_element (i) * row.ct[d][e];
         const double f =
-            tau * (k[i][e] * a_j - kji * a_i + diffusion[i][e] * (a_j - a_i));
+            tau * (row.k[e] * a_j - row.kt[e] * a_i + diffusion[i][e] * (a_j - a_i));
         low_flux[i][e] = f;
         change += f;
       }

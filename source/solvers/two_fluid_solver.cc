@@ -318,19 +318,39 @@ void TwoFluidSolver<dim>::set_initial_state ()
   up /= up.norm ();
 
   // solids fraction at the vertices (Q1 nodes)
-  const Point<dim>          origin;
-  const unsigned int        profile_points = 4000;
-  const std::vector<double> profile =
-      ic.hydrostatic_bed ? hydrostatic_profile (profile_points) : std::vector<double> ();
+  const Point<dim>                       origin;
+  std::vector<std::pair<double, double>> profile;
+  if (ic.hydrostatic_bed)
+  {
+    // the distinct vertex heights of the whole mesh, ascending
+    std::vector<double> local_heights;
+    for (const auto &cell : triangulation.active_cell_iterators ())
+      if (cell->is_locally_owned ())
+        for (const unsigned int v : cell->vertex_indices ())
+          local_heights.push_back ((cell->vertex (v) - origin) * up);
+    std::vector<double> heights;
+    for (const auto &part : Utilities::MPI::all_gather (communicator, local_heights))
+      heights.insert (heights.end (), part.begin (), part.end ());
+    std::sort (heights.begin (), heights.end ());
+    const double merge = 1e-9 * std::max (ic.bed_height, 1e-12);
+    heights.erase (std::unique (heights.begin (),
+                                heights.end (),
+                                [&] (double a, double b) { return b - a < merge; }),
+                   heights.end ());
+    profile = hydrostatic_profile (heights);
+  }
   auto hydrostatic_fraction = [&] (const double height)
   {
-    // linear interpolation in the tabulated profile (depth below the bed top)
-    const double position =
-        std::clamp ((ic.bed_height - height) / ic.bed_height, 0.0, 1.0) * profile_points;
-    const unsigned int k =
-        std::min (static_cast<unsigned int> (position), profile_points - 1);
-    const double w = position - k;
-    return (1 - w) * profile[k] + w * profile[k + 1];
+    // profile is top down; linear interpolation between the tabulated heights
+    for (unsigned int k = 0; k + 1 < profile.size (); ++k)
+      if (height >= profile[k + 1].first)
+      {
+        const double w = (profile[k].first - height) /
+                         std::max (profile[k].first - profile[k + 1].first, 1e-300);
+        return (1 - std::clamp (w, 0.0, 1.0)) * profile[k].second +
+               std::clamp (w, 0.0, 1.0) * profile[k + 1].second;
+      }
+    return profile.empty () ? 0.0 : profile.back ().second;
   };
   std::vector<types::global_dof_index> dofs (alpha_fe.n_dofs_per_cell ());
   for (const auto &cell : alpha_dof_handler.active_cell_iterators ())
@@ -402,35 +422,45 @@ void TwoFluidSolver<dim>::set_initial_state ()
 }
 
 template <int dim>
-std::vector<double> TwoFluidSolver<dim>::hydrostatic_profile (const unsigned int n) const
+std::vector<std::pair<double, double>>
+TwoFluidSolver<dim>::hydrostatic_profile (const std::vector<double> &heights) const
 {
-  // integrate dP/dz = -alpha(P) (rho_s - rho_g) |g| downward from P = 0 at the bed top
-  // once, by RK4 in z; alpha(P) the inverse of the (monotone) solids pressure. Entry k is
-  // alpha_s at depth k H/n below the bed top.
-  const auto  &pp     = parameters.physical;
-  const double weight = (pp.particle_density - pp.gas_density) * pp.gravity.norm ();
-  auto         alpha_of_pressure = [&] (const double P)
+  // The discrete rest state of the well-balanced compaction force (momentum_pressure.cc):
+  // from the top down, cell by cell between consecutive vertex heights,
+  //   P_s(alpha_k) - P_s(alpha_above) = (z_above - z_k) (rho_s - rho_g)|g|
+  //                                      (alpha_k + alpha_above) / 2,
+  // with the freeboard fraction above the bed (or P_s = 0 where the bed fills the
+  // domain). Each equation is monotone in alpha_k: bisection.
+  const auto  &pp       = parameters.physical;
+  const auto  &ic       = parameters.initial;
+  const double weight   = (pp.particle_density - pp.gas_density) * pp.gravity.norm ();
+  auto         pressure = [&] (const double a) {
+    return solids_stress->evaluate ({a, 0.0, 0.0}).pressure;
+  };
+  const double tolerance = 1e-9 * std::max (ic.bed_height, 1e-12);
+  std::vector<std::pair<double, double>> profile; // (height, alpha), top down
+  double                                 alpha_above = -1, z_above = 0;
+  for (auto z = heights.rbegin (); z != heights.rend (); ++z)
   {
+    if (*z > ic.bed_height + tolerance)
+    {
+      alpha_above = ic.freeboard_solids_fraction;
+      z_above     = *z;
+      continue;
+    }
     double lo = 0.0, hi = pp.maximum_packing;
-    for (unsigned int k = 0; k < 60; ++k)
+    for (unsigned int k = 0; k < 80; ++k)
     {
       const double mid = 0.5 * (lo + hi);
-      (solids_stress->evaluate ({mid, 0.0, 0.0}).pressure < P ? lo : hi) = mid;
+      const double residual =
+          alpha_above < 0 ? pressure (mid)
+                          : pressure (mid) - pressure (alpha_above) -
+                                (z_above - *z) * weight * 0.5 * (mid + alpha_above);
+      (residual <= 0 ? lo : hi) = mid;
     }
-    return 0.5 * (lo + hi);
-  };
-  const double        dz = parameters.initial.bed_height / n;
-  double              P  = 0;
-  std::vector<double> profile (n + 1);
-  profile[0] = alpha_of_pressure (0.0);
-  for (unsigned int k = 0; k < n; ++k)
-  {
-    const double k1 = weight * alpha_of_pressure (P);
-    const double k2 = weight * alpha_of_pressure (P + 0.5 * dz * k1);
-    const double k3 = weight * alpha_of_pressure (P + 0.5 * dz * k2);
-    const double k4 = weight * alpha_of_pressure (P + dz * k3);
-    P += dz / 6.0 * (k1 + 2 * k2 + 2 * k3 + k4);
-    profile[k + 1] = alpha_of_pressure (P);
+    alpha_above = 0.5 * (lo + hi);
+    z_above     = *z;
+    profile.emplace_back (*z, alpha_above);
   }
   return profile;
 }
@@ -451,45 +481,53 @@ bool TwoFluidSolver<dim>::try_time_step (const double dt, const unsigned int bdf
   const BDFCoefficients bdf = bdf_coefficients (bdf_order, dt, previous_time_step);
   make_flow_constraints (time + dt);
   last_krylov_iterations = 0;
-  std::vector<AlphaVector> nodal_velocity (dim, alpha);
-  AlphaVector              alpha_momentum (alpha_old);
-  alpha_momentum.update_ghost_values ();
-  BlockVector velocity_for_transport (flow_old);
+  AlphaVector alpha_momentum (alpha);
   for (unsigned int k = 0; k < parameters.time.outer_iterations; ++k)
   {
-    // 1. explicit bounded transport from t_n with u_s (t_n at k = 0, then the
-    //    midpoint of u_s^n and the latest iterate)
-    if (!parameters.boundary.hold_solids && !manufactured)
-    {
-      TimerOutput::Scope scope (timer, "alpha transport");
-      if (k > 0)
-      {
-        BlockVector owned (flow_owned, communicator);
-        owned = flow_old;
-        BlockVector latest (flow_owned, communicator);
-        latest = flow_solution; // ghosted -> owned: Trilinos adds need equal maps
-        owned.add (1.0, latest);
-        owned *= 0.5;
-        velocity_for_transport = owned;
-      }
-      solids_velocity_at_alpha_nodes (velocity_for_transport, nodal_velocity);
-      alpha = alpha_old;
-      transport.advance (alpha,
-                         nodal_velocity,
-                         dt,
-                         parameters.time.transport_cfl,
-                         parameters.physical.maximum_packing);
-      // 2. implicit solids-pressure correction
-      correct_solids_pressure (alpha_momentum, bdf, dt);
-      alpha_momentum = alpha;
-      alpha_momentum.update_ghost_values ();
-    }
-    // 3. closures at quadrature points + monolithic (u_g, u_s, p') solve
+    // 1. closures at quadrature points + monolithic (u_g, u_s, p') solve with
+    //    P_s(alpha_m) explicit, alpha_m the latest alpha_s (alpha_s^n at k = 0)
     assemble_flow_system (bdf, dt);
     const unsigned int iterations = solve_flow_system (dt);
     if (iterations == numbers::invalid_unsigned_int)
       return false;
     last_krylov_iterations += iterations;
+    if (parameters.boundary.hold_solids || manufactured)
+      continue;
+    // 2. explicit bounded transport from t_n with the midpoint of u_s^n and u_s*
+    {
+      TimerOutput::Scope scope (timer, "alpha transport");
+      alpha_momentum = alpha;
+      alpha_momentum.update_ghost_values ();
+      const FEValuesExtractors::Vector solids (dim);
+      // the transport integrates with QGauss(3) on the alpha cell; the same points on
+      // the flow cell of the same triangulation cell give u_s there
+      FEValues<dim> flow_values (mapping, flow_fe, QGauss<dim> (3), update_values);
+      std::vector<Tensor<1, dim>> u_now, u_before;
+      transport.set_velocity (
+          [&] (const typename DoFHandler<dim>::active_cell_iterator &alpha_cell,
+               const FEValues<dim> & /*alpha_values: QGauss(3) as flow_values*/,
+               std::vector<Tensor<1, dim>> &u)
+          {
+            flow_values.reinit (
+                typename DoFHandler<dim>::active_cell_iterator (&triangulation,
+                                                                alpha_cell->level (),
+                                                                alpha_cell->index (),
+                                                                &flow_dof_handler));
+            u_now.resize (u.size ());
+            u_before.resize (u.size ());
+            flow_values[solids].get_function_values (flow_solution, u_now);
+            flow_values[solids].get_function_values (flow_old, u_before);
+            for (unsigned int i = 0; i < u.size (); ++i)
+              u[i] = 0.5 * (u_now[i] + u_before[i]);
+          });
+      alpha = alpha_old;
+      transport.advance (
+          alpha, dt, parameters.time.transport_cfl, parameters.physical.maximum_packing);
+    }
+    // 3. implicit solids-pressure correction of alpha_s, then of u_s with the same
+    //    compaction response, so that velocity and packing stay consistent
+    if (correct_solids_pressure (alpha_momentum, bdf, dt))
+      correct_solids_velocity (alpha_momentum, bdf, dt);
   }
   // accept or reject
   double lo = std::numeric_limits<double>::max (), hi = -lo;

@@ -5,6 +5,9 @@
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
+#include <deal.II/fe/fe_values.h>
+
+#include <functional>
 #include <vector>
 
 namespace wetbed
@@ -30,15 +33,24 @@ public:
               const dealii::Mapping<dim>    &mapping,
               const Vector                  &layout);
 
+  /** Fills `u` with the solids velocity at the quadrature points of `fe_values`' cell. */
+  using VelocityAtQuadrature =
+      std::function<void (const typename dealii::DoFHandler<dim>::active_cell_iterator &,
+                          const dealii::FEValues<dim> &,
+                          std::vector<dealii::Tensor<1, dim>> &)>;
   /**
-   * Advances `alpha` (ghosted, in/out) by `dt` with the nodal solids velocity `u`
-   * (dim ghosted vectors); returns the number of sub-steps taken.
+   * Assembles the Galerkin operator k_ij = int phi_j u_s . grad phi_i with u_s at the
+   * quadrature points (the full velocity field, not its nodal values: a Q2 u_s moves
+   * alpha through its edge and face nodes too, so the transport is the adjoint of the
+   * discrete gradient that P_s acts through, and no velocity mode is left that P_s
+   * drives but alpha does not feel).
    */
-  unsigned int advance (Vector                    &alpha,
-                        const std::vector<Vector> &u,
-                        double                     dt,
-                        double                     cfl,
-                        double                     alpha_max);
+  void set_velocity (const VelocityAtQuadrature &velocity);
+  /**
+   * Advances `alpha` (ghosted, in/out) by `dt` with the operator of the last
+   * set_velocity(); returns the number of sub-steps taken.
+   */
+  unsigned int advance (Vector &alpha, double dt, double cfl, double alpha_max);
 
   const Vector &lumped_mass () const { return mass; }
 
@@ -67,9 +79,12 @@ private:
   struct Row
   {
     std::vector<unsigned int> columns; // local indices (owned + ghost)
-    std::vector<double>       c[dim];  // int phi_j d_d phi_i
-    std::vector<double>       ct[dim]; // int phi_i d_d phi_j
+    std::vector<double>       k;       // int phi_j u . grad phi_i
+    std::vector<double>       kt;      // int phi_i u . grad phi_j
   };
+  const dealii::DoFHandler<dim>         *dof_handler = nullptr;
+  const dealii::Mapping<dim>            *mapping     = nullptr;
+  dealii::TrilinosWrappers::SparseMatrix convection, convection_transpose;
   std::vector<Row> rows; // one per locally owned dof, in local order
   Vector           mass;
   // work vectors of one sub-step (ghosted), allocated with the graph

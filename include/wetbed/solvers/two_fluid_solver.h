@@ -78,12 +78,17 @@ private:
   double next_time_step (double dt) const;
 
   // assembly (source/assembly/)
-  void assemble_flow_system (const BDFCoefficients &bdf, double dt);
-  void correct_solids_pressure (const AlphaVector     &alpha_momentum,
+  void   assemble_flow_system (const BDFCoefficients &bdf, double dt);
+  double compaction_stiffness (double alpha_s, double alpha_m) const;
+  double compaction_resistance (double alpha_s, double beta, double rate) const;
+  /** Returns false where no compacted region exists (nothing was done). */
+  bool correct_solids_pressure (const AlphaVector     &alpha_momentum,
                                 const BDFCoefficients &bdf,
                                 double                 dt);
-  void solids_velocity_at_alpha_nodes (const BlockVector        &flow,
-                                       std::vector<AlphaVector> &u) const;
+  /** u_s += -P_s'(alpha) / (a0 alpha_s rho_s / dt + beta) grad (alpha - alpha_m). */
+  void correct_solids_velocity (const AlphaVector     &alpha_momentum,
+                                const BDFCoefficients &bdf,
+                                double                 dt);
 
   // linear solve (source/solvers/flow_linear_solve.cc)
   unsigned int solve_flow_system (double dt);
@@ -95,8 +100,10 @@ private:
 
   double inlet_superficial_velocity (double t) const;
   double solids_mass (const AlphaVector &alpha) const;
-  /** alpha_s of a packed bed at rest at n + 1 equidistant depths below the bed top. */
-  std::vector<double> hydrostatic_profile (unsigned int n) const;
+  /** (height, alpha_s) of the discrete rest state at the given vertex heights, top down.
+   */
+  std::vector<std::pair<double, double>>
+  hydrostatic_profile (const std::vector<double> &heights) const;
 
   const Parameters            parameters;
   MPI_Comm                    communicator;
