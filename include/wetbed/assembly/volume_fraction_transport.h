@@ -16,7 +16,7 @@ namespace wetbed
  * Explicit, sub-cycled, bounded and conservative transport of the solids fraction,
  *   d alpha/dt + div(alpha u_s) = 0,
  * on a continuous Q1 space: lumped mass, the Galerkin operator in the conservative
- * form k_ij = u_j . int phi_j grad phi_i (columns sum to zero, so the solids mass is
+ * form k_ij = int phi_j u_s . grad phi_i (columns sum to zero, so the solids mass is
  * conserved exactly whatever u_s does at the boundary), discrete upwinding
  * d_ij = max(-k_ij, 0, -k_ji) for the low-order update, and Zalesak's limiter of the
  * antidiffusive fluxes with local bounds and the global bounds [0, alpha_max]
