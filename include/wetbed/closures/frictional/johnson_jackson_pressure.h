@@ -15,6 +15,10 @@ struct JohnsonJacksonPressureCoefficients
   double minimum_distance; // delta_min: where the C1 linear continuation starts
 };
 
+template <typename Number>
+Number johnson_jackson_pressure_derivative (const Number &alpha,
+                                            const JohnsonJacksonPressureCoefficients &c);
+
 /**
  * Johnson-Jackson (1987) frictional pressure for alpha > alpha_fr,min (else 0)
  *   P_fr = Fr (alpha - alpha_fr,min)^n / (alpha_max - alpha)^p    alpha <= alpha_c,
@@ -35,16 +39,8 @@ Number johnson_jackson_pressure (const Number                             &alpha
     return Number (0.0);
   const double alpha_c = c.maximum_packing - c.minimum_distance;
   if (alpha > alpha_c && alpha_c > c.onset)
-  {
-    const double excess = alpha_c - c.onset, gap = c.minimum_distance;
-    const double value =
-        c.coefficient * pow (excess, c.exponent_n) / pow (gap, c.exponent_p);
-    const double slope = c.coefficient *
-                         (c.exponent_n * pow (excess, c.exponent_n - 1.0) * gap +
-                          c.exponent_p * pow (excess, c.exponent_n)) /
-                         pow (gap, c.exponent_p + 1.0);
-    return value + slope * (alpha - alpha_c);
-  }
+    return johnson_jackson_pressure (alpha_c, c) +
+           johnson_jackson_pressure_derivative (alpha_c, c) * (alpha - alpha_c);
   using std::max;
   const Number gap =
       max (Number (c.maximum_packing - alpha), Number (c.minimum_distance));
