@@ -2,7 +2,7 @@
 """Runs a .prm case with wetbed and checks its monitors.csv against physics.
 
 usage: case_checks.py CHECK WETBED SOURCE_DIR WORK_DIR
-CHECK: ergun | hydrostatic | packed | settling | ranks | bubbling
+CHECK: ergun | hydrostatic | packed | settling | ramp | ranks | bubbling
 """
 import csv
 import math
@@ -91,6 +91,67 @@ elif check == "settling":
     measured = -(t1["bed_height"] - t0["bed_height"]) / (t1["time"] - t0["time"])
     expect(abs(measured / speed - 1) < 0.05, f"interface speed {measured:.4f} m/s vs hindered settling {speed:.4f} m/s (within 5%)")
     bounds_and_mass(rows, 0.61)
+elif check == "ramp":
+    # T9: velocity ramp through minimum fluidization (Syamlal-O'Brien, 350 um glass)
+    rows = run("velocity_ramp")
+    bounds_and_mass(rows, 0.61)
+    expect(all(r["rejected_steps"] == 0 for r in rows), "no rejected steps")
+    # fluidized plateau: time mean of FI while U is held at 0.35 m/s, after 0.2 s to settle
+    held = [r for r in rows if 1.0 < r["time"] <= 1.8]
+    plateau = sum(r["fluidization_index"] * r["time_step"] for r in held) / sum(r["time_step"] for r in held)
+    expect(abs(plateau - 1) < 0.02, f"fluidized plateau FI {plateau:.4f} = 1 +- 2%")
+
+    # U_mf, the standard construction: the fixed-bed line (least squares over 0.2 <= FI
+    # <= 0.8 on the rising ramp) meets FI = 1. The drag law's value: the same construction
+    # on its pressure drop int beta U/alpha_g^2 dz over the bed at rest, alpha_s(z) from
+    # dP_s/dz = -alpha_s (rho_s - rho_g) g (Johnson-Jackson P_s, P_s = 0 at H = 0.15 m),
+    # against that bed's weight.
+    def line_meets_one(points):
+        n = len(points)
+        sx, sy = sum(u for u, _ in points), sum(f for _, f in points)
+        sxx, sxy = sum(u * u for u, _ in points), sum(u * f for u, f in points)
+        slope = (n * sxy - sx * sy) / (n * sxx - sx * sx)
+        return (1 - (sy - slope * sx) / n) / slope
+
+    fixed = [(r["inlet_superficial_velocity"], r["fluidization_index"]) for r in rows if r["time"] < 0.8 and 0.2 <= r["fluidization_index"] <= 0.8]
+    measured = line_meets_one(fixed)
+
+    mu, d, rho_g, rho_s, g, H = 1.8e-5, 350e-6, 1.2, 2500.0, 9.81, 0.15
+
+    def syamlal_obrien(a_s, slip):
+        a_g = 1 - a_s
+        re = rho_g * d * slip / mu
+        a, b = a_g**4.14, (0.8 * a_g**1.28 if a_g <= 0.85 else a_g**2.65)
+        v_r = 0.5 * (a - 0.06 * re + math.sqrt((0.06 * re) ** 2 + 0.12 * re * (2 * b - a) + a * a))
+        return 0.75 * mu * a_s * a_g * (0.63 * math.sqrt(re / v_r) + 4.8) ** 2 / (v_r * d * d)
+
+    def frictional_pressure(a):
+        return 0.0 if a <= 0.58 else 0.05 * (a - 0.58) ** 2 / (0.61 - a) ** 3
+
+    def packing_at(pressure):
+        lo, hi = 0.58, 0.609
+        for _ in range(60):
+            mid = 0.5 * (lo + hi)
+            lo, hi = (mid, hi) if frictional_pressure(mid) < pressure else (lo, mid)
+        return 0.5 * (lo + hi)
+
+    layers, dz, pressure, profile = 1500, H / 1500, 0.0, []
+    for _ in range(layers):  # top down, midpoint values
+        a = packing_at(pressure)
+        a = packing_at(pressure + 0.5 * a * (rho_s - rho_g) * g * dz)
+        profile.append(a)
+        pressure += a * (rho_s - rho_g) * g * dz
+    weight = pressure
+    law = []
+    for k in range(1, 400):
+        U = 0.25 * k / 400
+        fi = sum(syamlal_obrien(a, U / (1 - a)) * U / (1 - a) ** 2 for a in profile) * dz / weight
+        if 0.2 <= fi <= 0.8:
+            law.append((U, fi))
+    expected = line_meets_one(law)
+    expect(abs(measured / expected - 1) < 0.05, f"U_mf {measured:.4f} m/s vs the drag law's {expected:.4f} m/s (within 5%)")
+    first = next(r["inlet_superficial_velocity"] for r in rows if r["fluidization_index"] >= 1)
+    print(f"     (FI first reaches 1 at U = {first:.4f} m/s; bottom packing {profile[-1]:.4f})")
 elif check == "ranks":
     # T13: 1 and 2 MPI ranks give the same monitors to solver tolerance
     overrides = "subsection time stepping\n set end time = 0.02\nend\n"

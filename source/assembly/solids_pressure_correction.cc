@@ -5,6 +5,8 @@
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/trilinos_precondition.h>
 
+#include <algorithm>
+
 namespace wetbed
 {
 using namespace dealii;
@@ -12,14 +14,27 @@ using namespace dealii;
 /**
  * Implicit solids-pressure correction (DESIGN s4.2, the OpenFOAM implicitPhasePressure /
  * MFIX solids-correction idea in increment form). The momentum solve that produced the
- * transporting u_s saw -grad P_s(alpha_m); the correction makes the compaction response
- * implicit in the change since then:
- *   M_L (alpha - alpha*)/dt + K[D_p] (alpha - alpha_m) = 0,
- *   D_p = alpha_s P_s'(alpha*) / (a0 alpha_s rho_s / dt + beta).
- * K[D_p] is symmetric with zero row sums, so the solids mass is kept to solver
- * tolerance; a bed at rest (alpha* = alpha_m) is left exactly at rest. Skipped where
- * P_s' = 0, i.e. in every scene without compacted regions.
+ * transporting u_s saw -grad P_h(alpha_m), P_h = sum_j P_s(alpha_m,j) phi_j the Q1
+ * interpolant of the nodal solids pressure (the well-balanced compaction force). The
+ * correction makes the response of exactly that force implicit in the change since then:
+ *   M_L (alpha - alpha*)/dt + K w = 0,  w_j = P'_j (alpha_j - alpha_m,j),
+ *   K_ij = int D grad phi_i . grad phi_j,  D = alpha_s / R (compaction_mobility),
+ * with P'_j the nodal stiffness. For z = S^-1 w, S = diag(sqrt(P'_j)), it is symmetric
+ * positive definite:
+ *   (M_L + dt S K S) z = S M_L (alpha* - alpha_m),   w = S z,
+ * (w = 0 where P' = 0: those nodes only receive mass; no division by P'). K has zero
+ * row sums, so the edge fluxes dt K_ij (w_j - w_i) conserve the solids mass; a bed at
+ * rest (alpha* = alpha_m) is left exactly at rest. Skipped where P'_j = 0 at every node,
+ * i.e. in every scene without compacted regions.
+ *
+ * Why nodal: a node packed to P_s ~ 1e5 Pa between loose neighbours pushes through the
+ * nodal interpolant with its full P_s, while P_s' at the quadrature points (alpha_s
+ * interpolated towards the loose neighbours) is small or zero; a correction with
+ * quadrature-point stiffness then under-estimates the force the momentum solve will
+ * see and the compaction mode grows (measured: a 1D bed at U = 1.8 U_mf flung its
+ * bottom layer at 4 m/s within two steps of dt = 2 ms).
  */
+
 /**
  * The stiffness dP_s/dalpha the correction uses: P_s is convex, so the slope at the
  * larger of alpha_s (now) and alpha_m (what the momentum solve saw) bounds the secant
@@ -35,22 +50,38 @@ double TwoFluidSolver<dim>::compaction_stiffness (const double alpha_s,
       .pressure_derivative;
 }
 
+template <int dim>
+void TwoFluidSolver<dim>::nodal_compaction_stiffness (
+    const std::vector<types::global_dof_index> &dofs,
+    const AlphaVector                          &alpha_momentum,
+    std::vector<double>                        &slopes) const
+{
+  slopes.resize (dofs.size ());
+  for (unsigned int j = 0; j < dofs.size (); ++j)
+    slopes[j] = compaction_stiffness (alpha (dofs[j]), alpha_momentum (dofs[j]));
+}
+
 /**
- * Resistance of the solids to a compaction velocity when the gas gives way (mixture
- * volume flux unchanged, u_g = -alpha_s/alpha_g u_s): eliminating the gas momentum
- * and the pressure gives
- *   a0/dt alpha_s rho_s + a0/dt alpha_s^2 rho_g / alpha_g + beta / alpha_g^2,
- * i.e. the drag counts 1/alpha_g^2 times (6 times in a packed bed), not once.
+ * Volumetric mobility D = alpha_s / R of the solids under a compaction force when the
+ * gas gives way (mixture volume flux unchanged, u_g = -alpha_s/alpha_g u_s):
+ * eliminating the gas momentum and the pressure gives
+ *   R = a0/dt alpha_s rho_s + a0/dt alpha_s^2 rho_g / alpha_g + beta / alpha_g^2,
+ * i.e. the drag counts 1/alpha_g^2 times (6 times in a packed bed), not once. Written as
+ * 1 / (a0/dt (rho_s + alpha_s rho_g/alpha_g) + beta/(alpha_s alpha_g^2)), finite as
+ * alpha_s -> 0 (beta ~ alpha_s); 0 where there are no solids.
  */
 template <int dim>
-double TwoFluidSolver<dim>::compaction_resistance (const double alpha_s,
-                                                   const double beta,
-                                                   const double rate) const
+double TwoFluidSolver<dim>::compaction_mobility (const double          alpha_s,
+                                                 const Tensor<1, dim> &slip,
+                                                 const double          rate) const
 {
+  if (!(alpha_s > 0))
+    return 0.0;
   const double alpha_g = std::max (1.0 - alpha_s, 1e-6);
   const auto  &pp      = parameters.physical;
-  return rate * alpha_s * (pp.particle_density + alpha_s * pp.gas_density / alpha_g) +
-         beta / (alpha_g * alpha_g);
+  const double beta    = drag->coefficient (alpha_s, slip.norm (), gas_particle);
+  return 1.0 / (rate * (pp.particle_density + alpha_s * pp.gas_density / alpha_g) +
+                beta / (alpha_s * alpha_g * alpha_g));
 }
 
 template <int dim>
@@ -67,14 +98,15 @@ bool TwoFluidSolver<dim>::correct_solids_pressure (const AlphaVector     &alpha_
                               update_values | update_gradients | update_JxW_values);
   FEValues<dim>      flow_values (mapping, flow_fe, quadrature, update_values);
   const unsigned int n = alpha_fe.n_dofs_per_cell ();
-  FullMatrix<double> cell_matrix (n, n);
-  Vector<double>     cell_rhs (n);
+  FullMatrix<double> cell_flux (n, n), cell_system (n, n);
+  Vector<double>     cell_rhs (n), cell_mass (n);
   std::vector<types::global_dof_index> dofs (n);
-  std::vector<double>                  a (quadrature.size ()), a_m (quadrature.size ());
+  std::vector<double>                  a (quadrature.size ()), slopes (n);
   std::vector<Tensor<1, dim>>          ug (quadrature.size ()), us (quadrature.size ());
   const FEValuesExtractors::Vector     gas (0), solids (dim);
 
-  correction_matrix = 0;
+  correction_matrix      = 0;
+  compaction_flux_matrix = 0;
   TrilinosWrappers::MPI::Vector rhs (alpha_dof_handler.locally_owned_dofs (),
                                      communicator);
   bool                          active    = false;
@@ -83,55 +115,56 @@ bool TwoFluidSolver<dim>::correct_solids_pressure (const AlphaVector     &alpha_
   {
     if (cell->is_locally_owned ())
     {
+      cell->get_dof_indices (dofs);
+      nodal_compaction_stiffness (dofs, alpha_momentum, slopes);
       alpha_values.reinit (cell);
       flow_values.reinit (flow_cell);
       alpha_values.get_function_values (alpha, a);
-      alpha_values.get_function_values (alpha_momentum, a_m);
       flow_values[gas].get_function_values (flow_solution, ug);
       flow_values[solids].get_function_values (flow_solution, us);
-      cell->get_dof_indices (dofs);
-      cell_matrix = 0;
+      cell_flux   = 0;
+      cell_system = 0;
       cell_rhs    = 0;
+      cell_mass   = 0;
+      // no compacted node: w = 0 on the whole cell, no flux to compute
+      const bool compacted =
+          std::any_of (slopes.begin (), slopes.end (), [] (double s) { return s > 0; });
       for (unsigned int q = 0; q < quadrature.size (); ++q)
       {
-        const double alpha_s = a[q];
-        const double slope   = compaction_stiffness (alpha_s, a_m[q]);
-        const double beta =
-            alpha_s > 0
-                ? drag->coefficient (alpha_s, (ug[q] - us[q]).norm (), gas_particle)
-                : 0;
-        const double diffusivity =
-            slope > 0
-                ? alpha_s * slope / compaction_resistance (alpha_s, beta, bdf.a0 / dt)
-                : 0.0;
-        active = active || diffusivity > 0;
+        for (unsigned int i = 0; i < n; ++i)
+          cell_mass (i) += alpha_values.shape_value (i, q) * alpha_values.JxW (q);
+        if (!compacted)
+          continue;
+        const double diffusivity = compaction_mobility (a[q], ug[q] - us[q], bdf.a0 / dt);
         for (unsigned int i = 0; i < n; ++i)
           for (unsigned int j = 0; j < n; ++j)
-            cell_matrix (i, j) +=
+            cell_flux (i, j) +=
                 diffusivity * dt *
                 (alpha_values.shape_grad (i, q) * alpha_values.shape_grad (j, q)) *
                 alpha_values.JxW (q);
       }
-      // rhs: K (alpha_m - alpha*) so that the unknown is the increment alpha - alpha*
       for (unsigned int i = 0; i < n; ++i)
+      {
+        active = active || slopes[i] > 0;
         for (unsigned int j = 0; j < n; ++j)
-          cell_rhs (i) +=
-              cell_matrix (i, j) * (alpha_momentum (dofs[j]) - alpha (dofs[j]));
-      // lumped mass on the diagonal
-      for (unsigned int q = 0; q < quadrature.size (); ++q)
-        for (unsigned int i = 0; i < n; ++i)
-          cell_matrix (i, i) += alpha_values.shape_value (i, q) * alpha_values.JxW (q);
-      correction_matrix.add (dofs, cell_matrix);
+          cell_system (i, j) = std::sqrt (slopes[i] * slopes[j]) * cell_flux (i, j);
+        cell_system (i, i) += cell_mass (i);
+        cell_rhs (i) = std::sqrt (slopes[i]) * cell_mass (i) *
+                       (alpha (dofs[i]) - alpha_momentum (dofs[i]));
+      }
+      correction_matrix.add (dofs, cell_system);
+      compaction_flux_matrix.add (dofs, cell_flux);
       rhs.add (dofs, cell_rhs);
     }
     ++flow_cell;
   }
   correction_matrix.compress (VectorOperation::add);
+  compaction_flux_matrix.compress (VectorOperation::add);
   rhs.compress (VectorOperation::add);
   if (!Utilities::MPI::logical_or (active, communicator))
     return false;
 
-  TrilinosWrappers::MPI::Vector increment (rhs);
+  TrilinosWrappers::MPI::Vector increment (rhs); // z
   increment = 0;
   SolverControl control (
       1000, parameters.linear_solver.scalar_tolerance * rhs.l2_norm () + 1e-300);
@@ -139,28 +172,32 @@ bool TwoFluidSolver<dim>::correct_solids_pressure (const AlphaVector     &alpha_
   TrilinosWrappers::PreconditionAMG       amg;
   amg.initialize (correction_matrix);
   cg.solve (correction_matrix, increment, rhs, amg);
-  // x = alpha* + increment - alpha_m; the increment becomes the limited edge fluxes
-  // -A_ij (x_j - x_i) of the scaled operator A = dt K (its off-diagonal part)
-  AlphaVector x (alpha);
-  for (unsigned int i = 0; i < x.locally_owned_size (); ++i)
-    x.local_element (i) = alpha.local_element (i) +
-                          increment[alpha.get_partitioner ()->local_to_global (i)] -
-                          alpha_momentum.local_element (i);
-  x.update_ghost_values ();
-  transport.apply_diffusive_fluxes (
-      alpha, correction_matrix, x, parameters.physical.maximum_packing);
+  // the nodal pressure increment w = S z becomes the limited edge fluxes
+  // -dt K_ij (w_j - w_i)
+  AlphaVector pressure_increment (alpha);
+  for (unsigned int i = 0; i < pressure_increment.locally_owned_size (); ++i)
+    pressure_increment.local_element (i) =
+        std::sqrt (compaction_stiffness (alpha.local_element (i),
+                                         alpha_momentum.local_element (i))) *
+        increment[alpha.get_partitioner ()->local_to_global (i)];
+  pressure_increment.update_ghost_values ();
+  transport.apply_diffusive_fluxes (alpha,
+                                    compaction_flux_matrix,
+                                    pressure_increment,
+                                    parameters.physical.maximum_packing);
   return true;
 }
 
 /**
  * The velocity half of the correction (the SIMPLE/MFIX solids-fraction correction): the
- * compaction that the alpha correction made implicit, -P_s' grad(alpha - alpha_m), is
- * the impulse the momentum solve would have seen with P_s at the corrected alpha_s, so
- * u_s receives it with the same local mobility 1/(a0 alpha_s rho_s/dt + beta), as a
- * lumped L2 projection onto the Q2 nodes. Without it u_s keeps the explicit P_s
- * impulse, which in a packed bed is dt P' k |d alpha| / rho_s: a velocity that does
- * not move alpha but grows with the stiffness P' (an undamped oscillation, measured
- * at ~1 m/s in a bed at rest). With it the stiff modes are damped by ~1/2 per step.
+ * compaction force the alpha correction made implicit, -grad w_h with w_h = sum_j P'_j
+ * (alpha_j - alpha_m,j) phi_j the nodal pressure increment, is the impulse the momentum
+ * solve would have seen with P_h at the corrected alpha_s, so u_s receives it with the
+ * same local mobility 1/R, as a lumped L2 projection onto the Q2 nodes; the gas gives
+ * way (mixture flux unchanged). Without it u_s keeps the explicit P_s impulse, which in a
+ * packed bed is dt P' k |d alpha| / rho_s: a velocity that does not move alpha but grows
+ * with the stiffness P' (measured at ~1 m/s in a bed at rest). With it the stiff modes
+ * are damped by ~1/2 per step.
  */
 template <int dim>
 void TwoFluidSolver<dim>::correct_solids_velocity (const AlphaVector     &alpha_momentum,
@@ -173,12 +210,12 @@ void TwoFluidSolver<dim>::correct_solids_velocity (const AlphaVector     &alpha_
       mapping, flow_fe, quadrature, update_values | update_JxW_values);
   FEValues<dim> alpha_values (
       mapping, alpha_fe, quadrature, update_values | update_gradients);
-  const unsigned int                   n = flow_fe.n_dofs_per_cell ();
-  std::vector<types::global_dof_index> dofs (n);
-  std::vector<double>                  a (quadrature.size ()), a_m (quadrature.size ());
-  std::vector<Tensor<1, dim>> grad_a (quadrature.size ()), grad_a_m (quadrature.size ()),
-      ug (quadrature.size ()), us (quadrature.size ());
-  const FEValuesExtractors::Vector gas (0), solids (dim);
+  const unsigned int                   n       = flow_fe.n_dofs_per_cell ();
+  const unsigned int                   n_alpha = alpha_fe.n_dofs_per_cell ();
+  std::vector<types::global_dof_index> dofs (n), alpha_dofs (n_alpha);
+  std::vector<double>                  a (quadrature.size ()), slopes (n_alpha);
+  std::vector<Tensor<1, dim>>          ug (quadrature.size ()), us (quadrature.size ());
+  const FEValuesExtractors::Vector     gas (0), solids (dim);
   BlockVector impulse (flow_owned, communicator), lumped_mass (flow_owned, communicator);
   Vector<double> cell_impulse (n), cell_mass (n);
   auto           alpha_cell = alpha_dof_handler.begin_active ();
@@ -186,28 +223,33 @@ void TwoFluidSolver<dim>::correct_solids_velocity (const AlphaVector     &alpha_
   {
     if (cell->is_locally_owned ())
     {
+      alpha_cell->get_dof_indices (alpha_dofs);
+      nodal_compaction_stiffness (alpha_dofs, alpha_momentum, slopes);
       flow_values.reinit (cell);
       alpha_values.reinit (alpha_cell);
-      alpha_values.get_function_values (alpha, a);
-      alpha_values.get_function_gradients (alpha, grad_a);
-      alpha_values.get_function_gradients (alpha_momentum, grad_a_m);
-      alpha_values.get_function_values (alpha_momentum, a_m);
-      flow_values[gas].get_function_values (flow_solution, ug);
-      flow_values[solids].get_function_values (flow_solution, us);
       cell->get_dof_indices (dofs);
-      cell_impulse = 0;
-      cell_mass    = 0;
-      for (unsigned int q = 0; q < quadrature.size (); ++q)
+      cell_impulse   = 0;
+      cell_mass      = 0;
+      bool compacted = false;
+      for (unsigned int j = 0; j < n_alpha; ++j)
+        compacted = compacted || (slopes[j] > 0 && alpha (alpha_dofs[j]) !=
+                                                       alpha_momentum (alpha_dofs[j]));
+      if (compacted)
       {
-        const double slope = compaction_stiffness (a[q], a_m[q]);
-        if (!(slope > 0))
+        alpha_values.get_function_values (alpha, a);
+        flow_values[gas].get_function_values (flow_solution, ug);
+        flow_values[solids].get_function_values (flow_solution, us);
+      }
+      for (unsigned int q = 0; q < quadrature.size () && compacted; ++q)
+      {
+        Tensor<1, dim> grad_w;
+        for (unsigned int j = 0; j < n_alpha; ++j)
+          grad_w += slopes[j] * (alpha (alpha_dofs[j]) - alpha_momentum (alpha_dofs[j])) *
+                    alpha_values.shape_grad (j, q);
+        if (!(a[q] > 1e-12))
           continue;
-        const double beta =
-            a[q] > 0 ? drag->coefficient (a[q], (ug[q] - us[q]).norm (), gas_particle)
-                     : 0;
         const Tensor<1, dim> velocity_change =
-            -slope / compaction_resistance (a[q], beta, bdf.a0 / dt) *
-            (grad_a[q] - grad_a_m[q]);
+            -compaction_mobility (a[q], ug[q] - us[q], bdf.a0 / dt) / a[q] * grad_w;
         // the gas gives way so that the mixture volume flux is unchanged
         const double gas_share = -a[q] / (1.0 - a[q]);
         for (unsigned int i = 0; i < n; ++i)
@@ -251,8 +293,6 @@ template void   TwoFluidSolver<2>::correct_solids_velocity (const AlphaVector &,
 template void   TwoFluidSolver<3>::correct_solids_velocity (const AlphaVector &,
                                                           const BDFCoefficients &,
                                                           double);
-template double TwoFluidSolver<2>::compaction_resistance (double, double, double) const;
-template double TwoFluidSolver<3>::compaction_resistance (double, double, double) const;
 template double TwoFluidSolver<2>::compaction_stiffness (double, double) const;
 template double TwoFluidSolver<3>::compaction_stiffness (double, double) const;
 template bool   TwoFluidSolver<2>::correct_solids_pressure (const AlphaVector &,

@@ -19,11 +19,12 @@ template <int dim>
 MonitorRow TwoFluidSolver<dim>::evaluate_monitors () const
 {
   MonitorRow row;
-  row.step      = step_number;
-  row.time      = time;
-  row.time_step = previous_time_step;
-  row.krylov    = last_krylov_iterations;
-  row.rejected  = rejected_steps;
+  row.step           = step_number;
+  row.time           = time;
+  row.time_step      = previous_time_step;
+  row.inlet_velocity = inlet_superficial_velocity (time);
+  row.krylov         = last_krylov_iterations;
+  row.rejected       = rejected_steps;
 
   const QGauss<dim - 1> face_quadrature (3);
   FEFaceValues<dim>     face_values (

@@ -1,6 +1,7 @@
 #include <wetbed/solvers/two_fluid_solver.h>
 
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/vector_tools.h>
 
@@ -8,7 +9,11 @@ namespace wetbed
 {
 using namespace dealii;
 
-/** Writes u_g, u_s, p', alpha_s, alpha_g as VTU pieces with a PVTU record. */
+/**
+ * Writes u_g, u_s, p', alpha_s, alpha_g, the solids pressure P_s(alpha_s) (nodal, on the
+ * alpha_s space, as the compaction force uses it) and the drag coefficient beta (cell
+ * mean over the Gauss points, with the local slip) as VTU pieces with a PVTU record.
+ */
 template <int dim>
 void TwoFluidSolver<dim>::write_fields () const
 {
@@ -31,6 +36,44 @@ void TwoFluidSolver<dim>::write_fields () const
     alpha_g.local_element (i) = 1.0 - alpha.local_element (i);
   alpha_g.update_ghost_values ();
   data_out.add_data_vector (alpha_dof_handler, alpha_g, "alpha_g");
+  AlphaVector solids_pressure (alpha);
+  for (unsigned int i = 0; i < solids_pressure.locally_owned_size (); ++i)
+    solids_pressure.local_element (i) =
+        solids_stress->evaluate ({alpha.local_element (i), 0.0, 0.0}).pressure;
+  solids_pressure.update_ghost_values ();
+  data_out.add_data_vector (alpha_dof_handler, solids_pressure, "solids_pressure");
+
+  Vector<float>     drag_coefficient (triangulation.n_active_cells ());
+  const QGauss<dim> quadrature (2);
+  FEValues<dim>     flow_values (
+      mapping, flow_fe, quadrature, update_values | update_JxW_values);
+  FEValues<dim> alpha_values (mapping, alpha_fe, quadrature, update_values);
+  const FEValuesExtractors::Vector gas (0), solids (dim);
+  std::vector<Tensor<1, dim>>      u_g (quadrature.size ()), u_s (quadrature.size ());
+  std::vector<double>              alpha_q (quadrature.size ());
+  auto                             alpha_cell = alpha_dof_handler.begin_active ();
+  for (const auto &cell : flow_dof_handler.active_cell_iterators ())
+  {
+    if (cell->is_locally_owned ())
+    {
+      flow_values.reinit (cell);
+      alpha_values.reinit (alpha_cell);
+      flow_values[gas].get_function_values (flow_solution, u_g);
+      flow_values[solids].get_function_values (flow_solution, u_s);
+      alpha_values.get_function_values (alpha, alpha_q);
+      double integral = 0, volume = 0;
+      for (unsigned int q = 0; q < quadrature.size (); ++q)
+      {
+        integral +=
+            drag->coefficient (alpha_q[q], (u_g[q] - u_s[q]).norm (), gas_particle) *
+            flow_values.JxW (q);
+        volume += flow_values.JxW (q);
+      }
+      drag_coefficient (cell->active_cell_index ()) = integral / volume;
+    }
+    ++alpha_cell;
+  }
+  data_out.add_data_vector (drag_coefficient, "drag_coefficient");
   Vector<float> subdomain (triangulation.n_active_cells ());
   subdomain = triangulation.locally_owned_subdomain ();
   data_out.add_data_vector (subdomain, "rank");

@@ -9,7 +9,8 @@ void Monitors::open (const std::string &filename, const bool write)
   if (!write)
     return;
   file.open (filename);
-  file << "step,time,time_step,krylov_iterations,rejected_steps,pressure_drop,"
+  file << "step,time,time_step,inlet_superficial_velocity,krylov_iterations,rejected_"
+          "steps,pressure_drop,"
           "fluidization_index,solids_mass,solids_mass_drift,alpha_s_min,alpha_s_max,"
           "gas_speed_max,solids_speed_max,bed_height\n";
 }
@@ -20,10 +21,11 @@ void Monitors::add (const MonitorRow &r)
   if (!file.is_open ())
     return;
   file << r.step << ',' << std::setprecision (15) << r.time << ',' << r.time_step << ','
-       << r.krylov << ',' << r.rejected << ',' << r.pressure_drop << ',' << r.fluidization
-       << ',' << std::setprecision (15) << r.solids_mass << ',' << r.mass_drift << ','
-       << std::setprecision (15) << r.alpha_min << ',' << r.alpha_max << ','
-       << r.gas_speed_max << ',' << r.solids_speed_max << ',' << r.bed_height << '\n';
+       << r.inlet_velocity << ',' << r.krylov << ',' << r.rejected << ','
+       << r.pressure_drop << ',' << r.fluidization << ',' << std::setprecision (15)
+       << r.solids_mass << ',' << r.mass_drift << ',' << std::setprecision (15)
+       << r.alpha_min << ',' << r.alpha_max << ',' << r.gas_speed_max << ','
+       << r.solids_speed_max << ',' << r.bed_height << '\n';
   file.flush ();
 }
 } // namespace wetbed

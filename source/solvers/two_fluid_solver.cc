@@ -1,6 +1,8 @@
 #include <wetbed/core/input_error.h>
 #include <wetbed/solvers/two_fluid_solver.h>
 
+#include <sstream>
+
 #include <deal.II/base/function.h>
 #include <deal.II/base/quadrature.h>
 #include <deal.II/base/utilities.h>
@@ -166,6 +168,7 @@ void TwoFluidSolver<dim>::setup_dofs ()
     SparsityTools::distribute_sparsity_pattern (
         dsp, alpha_owned, communicator, alpha_relevant);
     correction_matrix.reinit (alpha_owned, alpha_owned, dsp, communicator);
+    compaction_flux_matrix.reinit (alpha_owned, alpha_owned, dsp, communicator);
   }
 
   preconditioner = std::make_unique<BlockPreconditioner> (parameters.linear_solver);
@@ -489,7 +492,10 @@ bool TwoFluidSolver<dim>::try_time_step (const double dt, const unsigned int bdf
     assemble_flow_system (bdf, dt);
     const unsigned int iterations = solve_flow_system (dt);
     if (iterations == numbers::invalid_unsigned_int)
+    {
+      rejection_reason = "FGMRES did not converge";
       return false;
+    }
     last_krylov_iterations += iterations;
     if (parameters.boundary.hold_solids || manufactured)
       continue;
@@ -542,9 +548,17 @@ bool TwoFluidSolver<dim>::try_time_step (const double dt, const unsigned int bdf
   owned_solution         = flow_solution; // norms need the non-ghosted layout
   const double flow_norm = owned_solution.l2_norm ();
   if (!std::isfinite (flow_norm) || !std::isfinite (hi))
+  {
+    rejection_reason = "NaN in the solution";
     return false;
+  }
   if (lo < -1e-10 || hi > parameters.physical.maximum_packing + 1e-10)
+  {
+    std::ostringstream reason;
+    reason << "alpha_s left [0, maximum packing]: [" << lo << ", " << hi << "]";
+    rejection_reason = reason.str ();
     return false;
+  }
   return true;
 }
 
@@ -575,17 +589,21 @@ void TwoFluidSolver<dim>::advance ()
     {
       accepted = try_time_step (dt, order);
     }
-    catch (const SolverControl::NoConvergence &)
+    catch (const SolverControl::NoConvergence &failure)
     {
-      accepted = false;
+      std::ostringstream reason;
+      reason << "a linear solve did not converge (" << failure.last_step
+             << " iterations, residual " << failure.last_residual << ")";
+      rejection_reason = reason.str ();
+      accepted         = false;
     }
     if (accepted)
       break;
     ++rejected_steps;
     dt *= 0.5;
     order = 1;
-    pcout << "  step rejected at t = " << time << "; retrying with dt = " << dt
-          << std::endl;
+    pcout << "  step rejected at t = " << time << " (" << rejection_reason
+          << "); retrying with dt = " << dt << std::endl;
     if (dt < ts.minimum_time_step)
       throw std::runtime_error ("time step fell below time stepping/minimum time step (" +
                                 std::to_string (ts.minimum_time_step) + ") at t = " +

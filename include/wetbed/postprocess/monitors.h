@@ -9,11 +9,12 @@ namespace wetbed
 /** One row of monitors.csv: the state of the bed after an accepted step. */
 struct MonitorRow
 {
-  unsigned int step          = 0;
-  double       time          = 0;
-  double       time_step     = 0;
-  unsigned int krylov        = 0; // FGMRES iterations summed over the outer iterations
-  unsigned int rejected      = 0; // rejected attempts so far
+  unsigned int step           = 0;
+  double       time           = 0;
+  double       time_step      = 0;
+  double       inlet_velocity = 0; // superficial gas velocity U(t) at the inlet (m/s)
+  unsigned int krylov         = 0; // FGMRES iterations summed over the outer iterations
+  unsigned int rejected       = 0; // rejected attempts so far
   double       pressure_drop = 0; // mean p' on the inlet minus mean p' on the outlet (Pa)
   double       fluidization  = 0; // pressure_drop * A / (buoyant bed weight)
   double       solids_mass   = 0; // kg (per metre depth in 2D)

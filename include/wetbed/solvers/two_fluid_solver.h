@@ -80,7 +80,15 @@ private:
   // assembly (source/assembly/)
   void   assemble_flow_system (const BDFCoefficients &bdf, double dt);
   double compaction_stiffness (double alpha_s, double alpha_m) const;
-  double compaction_resistance (double alpha_s, double beta, double rate) const;
+  /** alpha_s/R: the solids volume flux a unit compaction force gradient drives. */
+  double compaction_mobility (double                        alpha_s,
+                              const dealii::Tensor<1, dim> &slip,
+                              double                        rate) const;
+  /** dP_s/dalpha at the alpha_s nodes of a cell (compaction_stiffness node by node). */
+  void
+  nodal_compaction_stiffness (const std::vector<dealii::types::global_dof_index> &dofs,
+                              const AlphaVector   &alpha_momentum,
+                              std::vector<double> &slopes) const;
   /** Returns false where no compacted region exists (nothing was done). */
   bool correct_solids_pressure (const AlphaVector     &alpha_momentum,
                                 const BDFCoefficients &bdf,
@@ -135,9 +143,10 @@ private:
   mutable dealii::FunctionParser<1>                inlet_velocity_function;
   std::shared_ptr<const ManufacturedSolution<dim>> manufactured;
 
-  VolumeFractionTransport<dim>           transport;
-  std::unique_ptr<BlockPreconditioner>   preconditioner;
-  dealii::TrilinosWrappers::SparseMatrix correction_matrix;
+  VolumeFractionTransport<dim>         transport;
+  std::unique_ptr<BlockPreconditioner> preconditioner;
+  // compaction correction: M_L + dt K diag(P'_j) (solved) and dt K (the edge fluxes)
+  dealii::TrilinosWrappers::SparseMatrix correction_matrix, compaction_flux_matrix;
 
   Monitors     monitors;
   double       time, time_step, previous_time_step;
@@ -151,5 +160,6 @@ private:
   unsigned int iterations_after_build = 0;
   double       dt_at_build            = 1.0;
   bool         initialized            = false;
+  std::string  rejection_reason; // why the last attempted step was rejected
 };
 } // namespace wetbed
