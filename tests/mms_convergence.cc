@@ -90,7 +90,8 @@ public:
   ManufacturedTwoFluid (const bool two_fluid, const Parameters &p)
       : two_fluid (two_fluid), parameters (p),
         drag (closures::create_drag_model (p.drag_model)),
-        stress (closures::create_solids_stress_model (p.solids_stress, p.physical))
+        stress (closures::create_solids_stress_model (
+            p.solids_stress, p.physical, p.kinetic_theory))
   {
   }
 

@@ -70,7 +70,7 @@ void TwoFluidSolver<dim>::assemble_flow_system (const BDFCoefficients &bdf,
     component[i] = flow_fe.system_to_component_index (i).first;
 
   const FEValuesExtractors::Vector gas (0), solids (dim);
-  std::vector<double>              a_s (n_q);
+  std::vector<double>              a_s (n_q), theta_q (n_q);
   std::vector<Tensor<1, dim>>      grad_a_s (n_q);
   std::vector<Tensor<1, dim>>      ug_lag (n_q), us_lag (n_q), ug_old (n_q), us_old (n_q),
       ug_old2 (n_q), us_old2 (n_q);
@@ -82,7 +82,13 @@ void TwoFluidSolver<dim>::assemble_flow_system (const BDFCoefficients &bdf,
   std::vector<Tensor<1, dim>> grad_phi (n_dofs);
 
   const bool partial_slip =
-      parameters.boundary.solids_wall == WallCondition::partial_slip && !manufactured;
+      (parameters.boundary.solids_wall == WallCondition::partial_slip ||
+       parameters.boundary.solids_wall == WallCondition::johnson_jackson) &&
+      !manufactured;
+  const bool johnson_jackson_wall =
+      parameters.boundary.solids_wall == WallCondition::johnson_jackson;
+  std::vector<double> alpha_face (face_quadrature.size ()),
+      theta_face (face_quadrature.size ());
   const double wall_friction = parameters.boundary.solids_wall_friction;
   const bool   stabilized    = parameters.stabilization;
 
@@ -97,6 +103,7 @@ void TwoFluidSolver<dim>::assemble_flow_system (const BDFCoefficients &bdf,
     fe_values.reinit (cell);
     alpha_values.reinit (alpha_cell);
     alpha_values.get_function_values (alpha, a_s);
+    alpha_values.get_function_values (theta, theta_q);
     alpha_values.get_function_gradients (alpha, grad_a_s);
     fe_values[gas].get_function_values (flow_solution, ug_lag);
     fe_values[solids].get_function_values (flow_solution, us_lag);
@@ -135,8 +142,8 @@ void TwoFluidSolver<dim>::assemble_flow_system (const BDFCoefficients &bdf,
           alpha_s > 0 ? drag->coefficient (alpha_s, slip, gas_particle) : 0.0;
       const SymmetricTensor<2, dim> strain   = symmetrize (grad_us_lag[q]);
       const SymmetricTensor<2, dim> deviator = deviator_tensor<dim> () * strain;
-      const closures::SolidsStress  stress =
-          solids_stress->evaluate ({alpha_s, 0.0, std::sqrt (2.0 * deviator * deviator)});
+      const closures::SolidsStress  stress   = solids_stress->evaluate (
+          {alpha_s, theta_q[q], std::sqrt (2.0 * deviator * deviator)});
       const double mu_s = stress.shear_viscosity, lambda_s = stress.bulk_viscosity;
       const double JxW = fe_values.JxW (q);
 
@@ -206,7 +213,8 @@ void TwoFluidSolver<dim>::assemble_flow_system (const BDFCoefficients &bdf,
           const double       supg = tau[k] * inertia[k] * (advecting[k] * grad_phi[i]);
           cell_rhs (i) += force[k][d] * phi[i] * JxW;
           if (k == 1)
-            cell_rhs (i) += pressure_interpolant[q] * grad_phi[i][d] * JxW;
+            cell_rhs (i) += (pressure_interpolant[q] + stress.kinetic_pressure) *
+                            grad_phi[i][d] * JxW;
           for (unsigned int j = 0; j < n_dofs; ++j)
           {
             const unsigned int cj    = component[j];
@@ -268,6 +276,12 @@ void TwoFluidSolver<dim>::assemble_flow_system (const BDFCoefficients &bdf,
       face_values.reinit (cell, face);
       std::vector<Tensor<1, dim>> ug_face (face_quadrature.size ());
       face_values[gas].get_function_values (flow_solution, ug_face);
+      if (wall_friction_face && johnson_jackson_wall)
+      {
+        alpha_face_values.reinit (alpha_cell, face);
+        alpha_face_values.get_function_values (alpha, alpha_face);
+        alpha_face_values.get_function_values (theta, theta_face);
+      }
       for (unsigned int q = 0; q < face_quadrature.size (); ++q)
       {
         const Tensor<1, dim> n   = face_values.normal_vector (q);
@@ -276,6 +290,15 @@ void TwoFluidSolver<dim>::assemble_flow_system (const BDFCoefficients &bdf,
         // treated as inflow, rho_g |u_g.n|_- u_g.v (alpha_g ~ 1 in the freeboard)
         const double backflow =
             backflow_face ? rho_g * std::max (-(ug_face[q] * n), 0.0) : 0.0;
+        // Johnson-Jackson: the Robin coefficient C_JJ(alpha_s, g0, Theta) of the
+        // tangential traction -C_JJ u_slip (lagged); partial slip: a constant C
+        double friction = wall_friction;
+        if (wall_friction_face && johnson_jackson_wall)
+        {
+          const double a = std::max (alpha_face[q], 0.0);
+          friction       = kinetic_theory->wall ().shear_coefficient (
+              a, kinetic_theory->radial_distribution (a), std::max (theta_face[q], 0.0));
+        }
         Tensor<1, dim> traction[2];
         if (traction_face)
         {
@@ -306,8 +329,8 @@ void TwoFluidSolver<dim>::assemble_flow_system (const BDFCoefficients &bdf,
               const unsigned int e = cj % dim;
               // C (P_t u).(P_t v) with P_t = I - n n
               const double projector = (d == e ? 1.0 : 0.0) - n[d] * n[e];
-              cell_matrix (i, j) += wall_friction * projector * phi_i *
-                                    face_values.shape_value (j, q) * JxW;
+              cell_matrix (i, j) +=
+                  friction * projector * phi_i * face_values.shape_value (j, q) * JxW;
             }
         }
       }

@@ -33,6 +33,8 @@ WallCondition wall_condition_from_string (const std::string &name)
     return WallCondition::no_slip;
   if (name == "free-slip")
     return WallCondition::free_slip;
+  if (name == "Johnson-Jackson")
+    return WallCondition::johnson_jackson;
   return WallCondition::partial_slip;
 }
 } // namespace
@@ -211,8 +213,9 @@ void BoundaryConditionParameters::declare_parameters (ParameterHandler &prm)
                      "Gas velocity condition on walls.");
   prm.declare_entry ("solids wall condition",
                      "free-slip",
-                     Selection ("no-slip|free-slip|partial-slip"),
-                     "Solids tangential condition on walls (no penetration always).");
+                     Selection ("no-slip|free-slip|partial-slip|Johnson-Jackson"),
+                     "Solids tangential condition on walls (no penetration always); "
+                     "Johnson-Jackson needs solids stress/model = kinetic theory.");
   prm.declare_entry ("solids wall friction",
                      "0",
                      Double (0),
@@ -454,6 +457,7 @@ void Parameters::declare_parameters (ParameterHandler &prm)
                          ".");
   prm.leave_subsection ();
   SolidsStressParameters::declare_parameters (prm);
+  KineticTheoryParameters::declare_parameters (prm);
   prm.enter_subsection ("stabilization");
   prm.declare_entry ("enabled",
                      "true",
@@ -477,10 +481,16 @@ void Parameters::parse_parameters (ParameterHandler &prm)
   drag_model = prm.get ("model");
   prm.leave_subsection ();
   solids_stress.parse_parameters (prm, physical.maximum_packing);
+  kinetic_theory.parse_parameters (prm, physical.maximum_packing);
   prm.enter_subsection ("stabilization");
   stabilization = prm.get_bool ("enabled");
   prm.leave_subsection ();
   boundary.parse_parameters (prm);
+  require (boundary.solids_wall != WallCondition::johnson_jackson ||
+               solids_stress.model == "kinetic theory",
+           "boundary conditions/solids wall condition",
+           "Johnson-Jackson walls need solids stress/model = kinetic theory (they "
+           "depend on the granular temperature)");
   initial.parse_parameters (prm, physical.maximum_packing);
   time.parse_parameters (prm);
   linear_solver.parse_parameters (prm);

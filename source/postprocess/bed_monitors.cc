@@ -135,6 +135,36 @@ MonitorRow TwoFluidSolver<dim>::evaluate_monitors () const
   for (const auto &part : all)
     merged.insert (merged.end (), part.begin (), part.end ());
   std::sort (merged.begin (), merged.end ());
+
+  // granular temperature: extremes over the nodes, mean weighted by the solids mass
+  if (kinetic_theory)
+  {
+    double lo = std::numeric_limits<double>::max (), hi = 0, weighted = 0, weight = 0,
+           sound = 0;
+    for (unsigned int i = 0; i < theta.locally_owned_size (); ++i)
+    {
+      // the kinetic pressure is explicit in the step: its wave speed
+      // sqrt(dP/d(alpha rho)) ~ sqrt(2 P_kin / (alpha_s rho_s)) enters the CFL limit
+      const double a = std::max (alpha.local_element (i), 0.0);
+      if (a > 1e-3)
+        sound =
+            std::max (sound,
+                      std::sqrt (2.0 * kinetic_theory->evaluate (a, 1.0).pressure_factor *
+                                 theta.local_element (i) / (a * pp.particle_density)));
+      lo             = std::min (lo, theta.local_element (i));
+      hi             = std::max (hi, theta.local_element (i));
+      const double m = mass.local_element (i) * alpha.local_element (i);
+      weighted += m * theta.local_element (i);
+      weight += m;
+    }
+    row.theta_min            = Utilities::MPI::min (lo, communicator);
+    row.theta_max            = Utilities::MPI::max (hi, communicator);
+    row.granular_sound_speed = Utilities::MPI::max (sound, communicator);
+    weight                   = Utilities::MPI::sum (weight, communicator);
+    row.theta_mean =
+        weight > 0 ? Utilities::MPI::sum (weighted, communicator) / weight : 0;
+    row.granular_energy = granular_energy_budget;
+  }
   double total = 0;
   for (const auto &hm : merged)
     total += hm.second;

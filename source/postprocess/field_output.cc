@@ -42,6 +42,8 @@ void TwoFluidSolver<dim>::write_fields () const
         solids_stress->evaluate ({alpha.local_element (i), 0.0, 0.0}).pressure;
   solids_pressure.update_ghost_values ();
   data_out.add_data_vector (alpha_dof_handler, solids_pressure, "solids_pressure");
+  if (kinetic_theory)
+    data_out.add_data_vector (alpha_dof_handler, theta, "granular_temperature");
 
   Vector<float>     drag_coefficient (triangulation.n_active_cells ());
   const QGauss<dim> quadrature (2);

@@ -12,7 +12,9 @@ void Monitors::open (const std::string &filename, const bool write)
   file << "step,time,time_step,inlet_superficial_velocity,krylov_iterations,rejected_"
           "steps,pressure_drop,"
           "fluidization_index,solids_mass,solids_mass_drift,alpha_s_min,alpha_s_max,"
-          "gas_speed_max,solids_speed_max,bed_height\n";
+          "gas_speed_max,solids_speed_max,bed_height,theta_min,theta_mean,theta_max,"
+          "granular_production,granular_dissipation,granular_drag_exchange,"
+          "granular_wall_flux\n";
 }
 
 void Monitors::add (const MonitorRow &r)
@@ -25,7 +27,10 @@ void Monitors::add (const MonitorRow &r)
        << r.pressure_drop << ',' << r.fluidization << ',' << std::setprecision (15)
        << r.solids_mass << ',' << r.mass_drift << ',' << std::setprecision (15)
        << r.alpha_min << ',' << r.alpha_max << ',' << r.gas_speed_max << ','
-       << r.solids_speed_max << ',' << r.bed_height << '\n';
+       << r.solids_speed_max << ',' << r.bed_height << ',' << r.theta_min << ','
+       << r.theta_mean << ',' << r.theta_max << ',' << r.granular_energy.production << ','
+       << r.granular_energy.dissipation << ',' << r.granular_energy.drag_exchange << ','
+       << r.granular_energy.wall_flux << '\n';
   file.flush ();
 }
 } // namespace wetbed

@@ -37,8 +37,9 @@ TwoFluidSolver<dim>::TwoFluidSolver (const Parameters &parameters, MPI_Comm comm
       flow_fe (FE_Q<dim> (2), 2 * dim, FE_Q<dim> (1), 1),
       flow_dof_handler (triangulation), alpha_fe (1), alpha_dof_handler (triangulation),
       drag (closures::create_drag_model (parameters.drag_model)),
-      solids_stress (closures::create_solids_stress_model (parameters.solids_stress,
-                                                           parameters.physical)),
+      solids_stress (closures::create_solids_stress_model (
+          parameters.solids_stress, parameters.physical, parameters.kinetic_theory)),
+      kinetic_theory (solids_stress->kinetic_theory ()),
       gas_particle{parameters.physical.gas_density,
                    parameters.physical.gas_viscosity,
                    parameters.physical.particle_diameter},
@@ -129,6 +130,10 @@ void TwoFluidSolver<dim>::setup_dofs ()
   alpha.reinit (alpha_dof_handler.locally_owned_dofs (), alpha_relevant, communicator);
   alpha_old.reinit (alpha);
   alpha_old2.reinit (alpha);
+  // the granular temperature lives on the alpha_s space (Q1, same DoFs)
+  theta.reinit (alpha);
+  theta_old.reinit (alpha);
+  theta_old2.reinit (alpha);
   make_flow_constraints (0.0);
 
   {
@@ -169,6 +174,8 @@ void TwoFluidSolver<dim>::setup_dofs ()
         dsp, alpha_owned, communicator, alpha_relevant);
     correction_matrix.reinit (alpha_owned, alpha_owned, dsp, communicator);
     compaction_flux_matrix.reinit (alpha_owned, alpha_owned, dsp, communicator);
+    if (kinetic_theory && !parameters.kinetic_theory.algebraic)
+      granular_energy_matrix.reinit (alpha_owned, alpha_owned, dsp, communicator);
   }
 
   preconditioner = std::make_unique<BlockPreconditioner> (parameters.linear_solver);
@@ -383,6 +390,10 @@ void TwoFluidSolver<dim>::set_initial_state ()
   alpha.update_ghost_values ();
   alpha_old  = alpha;
   alpha_old2 = alpha;
+  theta      = kinetic_theory ? parameters.kinetic_theory.initial_temperature : 0.0;
+  theta.update_ghost_values ();
+  theta_old  = theta;
+  theta_old2 = theta;
   make_flow_constraints (0.0); // the inlet gas velocity depends on alpha_s
 
   TrilinosWrappers::MPI::BlockVector owned_flow (flow_owned, communicator);
@@ -534,6 +545,12 @@ bool TwoFluidSolver<dim>::try_time_step (const double dt, const unsigned int bdf
     //    compaction response, so that velocity and packing stay consistent
     if (correct_solids_pressure (alpha_momentum, bdf, dt))
       correct_solids_velocity (alpha_momentum, bdf, dt);
+    // 4. granular temperature with the new alpha_s and u_s (PDE or local equilibrium)
+    if (kinetic_theory && !update_granular_temperature (bdf, dt))
+    {
+      rejection_reason = "granular temperature solve failed";
+      return false;
+    }
   }
   // accept or reject
   double lo = std::numeric_limits<double>::max (), hi = -lo;
@@ -568,8 +585,9 @@ double TwoFluidSolver<dim>::next_time_step (const double dt) const
   const auto &ts = parameters.time;
   if (!ts.adaptive)
     return dt;
-  const MonitorRow &row = monitors.last ();
-  const double speed = std::max ({row.solids_speed_max, 0.25 * row.gas_speed_max, 1e-12});
+  const MonitorRow &row   = monitors.last ();
+  const double      speed = std::max (
+      {row.solids_speed_max, 0.25 * row.gas_speed_max, row.granular_sound_speed, 1e-12});
   const double cfl_dt = ts.cfl_target * min_node_spacing / speed;
   return std::min ({ts.maximum_time_step, ts.growth_factor * dt, cfl_dt});
 }
@@ -610,12 +628,15 @@ void TwoFluidSolver<dim>::advance ()
                                 std::to_string (time) + ": the run stops here");
     flow_solution = saved_flow;
     alpha         = alpha_old;
+    theta         = theta_old;
   }
   // shift history
   flow_old2  = flow_old;
   flow_old   = flow_solution;
   alpha_old2 = alpha_old;
   alpha_old  = alpha;
+  theta_old2 = theta_old;
+  theta_old  = theta;
   time += dt;
   previous_time_step = dt;
   ++step_number;

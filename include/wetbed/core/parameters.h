@@ -2,6 +2,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/tensor.h>
+#include <wetbed/core/kinetic_theory_parameters.h>
 
 #include <string>
 
@@ -51,7 +52,8 @@ enum class WallCondition
 {
   no_slip,
   free_slip,
-  partial_slip
+  partial_slip,
+  johnson_jackson
 };
 
 /** `subsection boundary conditions`. */
@@ -129,6 +131,7 @@ struct Parameters
   PhysicalProperties          physical;
   std::string                 drag_model;
   SolidsStressParameters      solids_stress;
+  KineticTheoryParameters     kinetic_theory;
   BoundaryConditionParameters boundary;
   InitialConditionParameters  initial;
   TimeSteppingParameters      time;

@@ -6,6 +6,15 @@
 
 namespace wetbed
 {
+/** Where the granular energy goes (W per metre depth in 2D, W in 3D), integrated. */
+struct GranularEnergyBudget
+{
+  double production    = 0; // viscous heating + compression
+  double dissipation   = 0; // inelastic collisions
+  double drag_exchange = 0; // -3 beta Theta, to the gas
+  double wall_flux     = 0; // G_w - D_w through Johnson-Jackson walls (into the bed)
+};
+
 /** One row of monitors.csv: the state of the bed after an accepted step. */
 struct MonitorRow
 {
@@ -24,6 +33,9 @@ struct MonitorRow
   double       gas_speed_max = 0;
   double       solids_speed_max = 0;
   double       bed_height       = 0; // height below which 95% of the solids lie
+  double theta_min = 0, theta_mean = 0, theta_max = 0; // Theta (mean: solids-weighted)
+  double granular_sound_speed = 0; // max sqrt(2 P_kin/(alpha_s rho_s)) (m/s)
+  GranularEnergyBudget granular_energy;
 };
 
 /** Collects MonitorRows and writes them (rank 0) to a CSV file. */

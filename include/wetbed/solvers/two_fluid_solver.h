@@ -2,6 +2,7 @@
 
 #include <wetbed/assembly/volume_fraction_transport.h>
 #include <wetbed/closures/drag/drag_model.h>
+#include <wetbed/closures/kinetic_theory/kinetic_theory.h>
 #include <wetbed/closures/solids_stress/solids_stress_model.h>
 #include <wetbed/core/manufactured_solution.h>
 #include <wetbed/core/parameters.h>
@@ -98,6 +99,10 @@ private:
                                 const BDFCoefficients &bdf,
                                 double                 dt);
 
+  // granular temperature (source/assembly/granular_energy.cc): the PDE, or the local
+  // equilibrium projected onto the nodes; false if the solve failed
+  bool update_granular_temperature (const BDFCoefficients &bdf, double dt);
+
   // linear solve (source/solvers/flow_linear_solve.cc)
   unsigned int solve_flow_system (double dt);
   void         build_velocity_preconditioner (double dt);
@@ -136,9 +141,12 @@ private:
   BlockVector flow_solution, flow_old, flow_old2;
 
   AlphaVector alpha, alpha_old, alpha_old2;
+  // granular temperature Theta (m^2/s^2) on the alpha_s space; zero without KTGF
+  AlphaVector theta, theta_old, theta_old2;
 
   std::unique_ptr<closures::DragModel>             drag;
   std::unique_ptr<closures::SolidsStressModel>     solids_stress;
+  const closures::KineticTheory                   *kinetic_theory; // null without KTGF
   closures::GasParticleProperties                  gas_particle;
   mutable dealii::FunctionParser<1>                inlet_velocity_function;
   std::shared_ptr<const ManufacturedSolution<dim>> manufactured;
@@ -147,6 +155,8 @@ private:
   std::unique_ptr<BlockPreconditioner> preconditioner;
   // compaction correction: M_L + dt K diag(P'_j) (solved) and dt K (the edge fluxes)
   dealii::TrilinosWrappers::SparseMatrix correction_matrix, compaction_flux_matrix;
+  dealii::TrilinosWrappers::SparseMatrix granular_energy_matrix; // PDE model only
+  GranularEnergyBudget                   granular_energy_budget; // of the last update
 
   Monitors     monitors;
   double       time, time_step, previous_time_step;

@@ -9,6 +9,7 @@ namespace wetbed
 {
 struct SolidsStressParameters;
 struct PhysicalProperties;
+struct KineticTheoryParameters;
 } // namespace wetbed
 
 namespace wetbed::closures
@@ -24,11 +25,14 @@ struct SolidsState
 /** Solids pressure and viscosities at one quadrature point. */
 struct SolidsStress
 {
-  double pressure;            // P_s (Pa)
-  double pressure_derivative; // dP_s/dalpha_s (Pa)
-  double shear_viscosity;     // mu_s (Pa s), MFIX convention (no alpha_s in front)
-  double bulk_viscosity;      // lambda_s (Pa s)
+  double pressure;             // compaction P_s(alpha_s) (Pa), interpolated from nodes
+  double pressure_derivative;  // dP_s/dalpha_s (Pa)
+  double shear_viscosity;      // mu_s (Pa s), MFIX convention (no alpha_s in front)
+  double bulk_viscosity;       // lambda_s (Pa s)
+  double kinetic_pressure = 0; // P_kin+col(alpha_s, Theta) (Pa), at the point
 };
+
+class KineticTheory;
 
 /**
  * Rheology of the particle phase: tau_s = 2 mu_s D + (lambda_s - 2/3 mu_s) div u_s I and
@@ -40,11 +44,14 @@ public:
   virtual ~SolidsStressModel ()                                  = default;
   virtual std::string  name () const                             = 0;
   virtual SolidsStress evaluate (const SolidsState &state) const = 0;
+  /** The kinetic theory behind the model, if any (then Theta is solved for). */
+  virtual const KineticTheory *kinetic_theory () const { return nullptr; }
 };
 
 std::unique_ptr<SolidsStressModel>
-create_solids_stress_model (const SolidsStressParameters &parameters,
-                            const PhysicalProperties     &physical);
+create_solids_stress_model (const SolidsStressParameters  &parameters,
+                            const PhysicalProperties      &physical,
+                            const KineticTheoryParameters &kinetic);
 
 std::string solids_stress_model_names ();
 } // namespace wetbed::closures

@@ -1,0 +1,258 @@
+#include <wetbed/closures/kinetic_theory/collisional_terms.h>
+#include <wetbed/solvers/two_fluid_solver.h>
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/solver_gmres.h>
+#include <deal.II/lac/trilinos_precondition.h>
+
+namespace wetbed
+{
+using namespace dealii;
+
+/**
+ * The granular temperature Theta on the alpha_s space (Q1), after the alpha_s and u_s
+ * corrections of an outer iteration.
+ *
+ * PDE (DESIGN s1), in advective form (the solids continuity times 3/2 rho Theta
+ * subtracted):
+ *   3/2 alpha rho (dTheta/dt + u_s.grad Theta) = div(kappa grad Theta)
+ *       + 2 mu D:D + (lambda - 2/3 mu)(tr D)^2 - p_hat Theta div u_s
+ *       - K_gamma Theta^(3/2) - 3 beta Theta,
+ * mu = mu_col + mu_kin (the frictional viscosity does not heat the particles), p_hat =
+ * P_kin+col/Theta. Production is explicit and non-negative (viscous heating and
+ * compression p_hat Theta* (div u_s)_-), every sink implicit and linearised at the
+ * latest Theta*, and scaled by min(1, alpha_s/alpha_dilute) (no heating of the empty
+ * freeboard by the shear of a velocity that carries no particles) (dissipation K_gamma
+ * sqrt(Theta*) Theta, drag exchange 3 beta Theta, expansion p_hat (div u_s)_+ Theta,
+ * Johnson-Jackson wall D_w), the mass lumped and the convection upwinded (discrete
+ * upwinding on the Galerkin operator), so the matrix is an M-matrix on non-obtuse meshes;
+ * BDF2 in time, Theta clamped to [minimum, maximum] (the cap acts in the dilute
+ * freeboard, where viscous heating ~ alpha_s outruns collisional dissipation ~
+ * alpha_s^2). Johnson- Jackson walls: kappa dTheta/dn = G_w - D_w with G_w = C_JJ
+ * |u_slip|^2 explicit.
+ *
+ * Algebraic: the local equilibrium of closures_reference.py (production = dissipation
+ * + drag exchange) at the Gauss points, lumped-L2 projected onto the nodes; no matrix.
+ */
+template <int dim>
+bool TwoFluidSolver<dim>::update_granular_temperature (const BDFCoefficients &bdf,
+                                                       const double           dt)
+{
+  TimerOutput::Scope    scope (timer, "granular temperature");
+  const auto           &kt        = parameters.kinetic_theory;
+  const double          rho_s     = parameters.physical.particle_density;
+  const bool            algebraic = kt.algebraic;
+  const QGauss<dim>     quadrature (2);
+  const QGauss<dim - 1> face_quadrature (2);
+  FEValues<dim>         theta_values (mapping,
+                              alpha_fe,
+                              quadrature,
+                              update_values | update_gradients | update_JxW_values);
+  FEValues<dim>         flow_values (
+      mapping, flow_fe, quadrature, update_values | update_gradients);
+  FEFaceValues<dim> theta_face (
+      mapping, alpha_fe, face_quadrature, update_values | update_JxW_values);
+  FEFaceValues<dim> flow_face (
+      mapping, flow_fe, face_quadrature, update_values | update_normal_vectors);
+  const unsigned int n = alpha_fe.n_dofs_per_cell (), n_q = quadrature.size ();
+  FullMatrix<double> cell_matrix (n, n);
+  Vector<double>     cell_rhs (n), cell_mass (n);
+  std::vector<types::global_dof_index> dofs (n);
+  std::vector<double>                  a (n_q), t_now (n_q), t_old (n_q), t_old2 (n_q);
+  std::vector<Tensor<1, dim>>          ug (n_q), us (n_q);
+  std::vector<Tensor<2, dim>>          grad_us (n_q);
+  std::vector<double> a_face (face_quadrature.size ()), t_face (face_quadrature.size ());
+  std::vector<Tensor<1, dim>>      us_face (face_quadrature.size ());
+  const FEValuesExtractors::Vector gas (0), solids (dim);
+  const bool                       johnson_jackson_walls =
+      parameters.boundary.solids_wall == WallCondition::johnson_jackson;
+  const double residual_alpha = 1e-6;
+
+  TrilinosWrappers::MPI::Vector rhs (alpha_dof_handler.locally_owned_dofs (),
+                                     communicator),
+      lumped (rhs);
+  if (!algebraic)
+    granular_energy_matrix = 0;
+  GranularEnergyBudget budget;
+
+  auto flow_cell = flow_dof_handler.begin_active ();
+  for (const auto &cell : alpha_dof_handler.active_cell_iterators ())
+  {
+    if (cell->is_locally_owned ())
+    {
+      theta_values.reinit (cell);
+      flow_values.reinit (flow_cell);
+      theta_values.get_function_values (alpha, a);
+      theta_values.get_function_values (theta, t_now);
+      theta_values.get_function_values (theta_old, t_old);
+      theta_values.get_function_values (theta_old2, t_old2);
+      flow_values[gas].get_function_values (flow_solution, ug);
+      flow_values[solids].get_function_values (flow_solution, us);
+      flow_values[solids].get_function_gradients (flow_solution, grad_us);
+      cell->get_dof_indices (dofs);
+      cell_matrix = 0;
+      cell_rhs    = 0;
+      cell_mass   = 0;
+      for (unsigned int q = 0; q < n_q; ++q)
+      {
+        const double alpha_s = std::max (a[q], 0.0), JxW = theta_values.JxW (q);
+        const SymmetricTensor<2, dim> D        = symmetrize (grad_us[q]);
+        const double                  trace_d  = trace (D);
+        const double                  d_ddot_d = D * D;
+        const double                  beta =
+            alpha_s > 0
+                                 ? drag->coefficient (alpha_s, (ug[q] - us[q]).norm (), gas_particle)
+                                 : 0.0;
+        for (unsigned int i = 0; i < n; ++i)
+          cell_mass (i) += theta_values.shape_value (i, q) * JxW;
+        if (algebraic)
+        {
+          const double value =
+              kinetic_theory->algebraic_temperature (alpha_s, trace_d, d_ddot_d, beta);
+          for (unsigned int i = 0; i < n; ++i)
+            cell_rhs (i) += value * theta_values.shape_value (i, q) * JxW;
+          const auto c = kinetic_theory->evaluate (alpha_s, value);
+          budget.production +=
+              (2 * c.shear_viscosity * d_ddot_d +
+               (c.bulk_viscosity - 2.0 / 3 * c.shear_viscosity) * trace_d * trace_d) *
+              JxW;
+          budget.dissipation += c.dissipation_factor * std::pow (value, 1.5) * JxW;
+          budget.drag_exchange += 3 * beta * value * JxW;
+          continue;
+        }
+        const double theta_star = std::max (t_now[q], kt.minimum_temperature);
+        const auto   c          = kinetic_theory->evaluate (alpha_s, theta_star);
+        const double capacity   = 1.5 * rho_s * std::max (alpha_s, residual_alpha);
+        const double heating =
+            std::min (1.0, alpha_s / kt.dilute_fraction) *
+            (2 * c.shear_viscosity * d_ddot_d +
+             (c.bulk_viscosity - 2.0 / 3 * c.shear_viscosity) * trace_d * trace_d +
+             c.pressure_factor * theta_star * std::max (-trace_d, 0.0));
+        const double sink = c.dissipation_factor * std::sqrt (theta_star) + 3 * beta +
+                            c.pressure_factor * std::max (trace_d, 0.0);
+        const double history = -(bdf.a1 * t_old[q] + bdf.a2 * t_old2[q]) / dt;
+        budget.production += heating * JxW;
+        budget.dissipation += c.dissipation_factor * std::pow (theta_star, 1.5) * JxW;
+        budget.drag_exchange += 3 * beta * theta_star * JxW;
+        for (unsigned int i = 0; i < n; ++i)
+        {
+          const double phi_i = theta_values.shape_value (i, q);
+          // lumped: mass, history, sinks on the diagonal
+          cell_matrix (i, i) += (capacity * bdf.a0 / dt + sink) * phi_i * JxW;
+          cell_rhs (i) += (heating + capacity * history) * phi_i * JxW;
+          for (unsigned int j = 0; j < n; ++j)
+            cell_matrix (i, j) +=
+                (capacity * phi_i * (us[q] * theta_values.shape_grad (j, q)) +
+                 c.conductivity *
+                     (theta_values.shape_grad (i, q) * theta_values.shape_grad (j, q))) *
+                JxW;
+        }
+      }
+      if (!algebraic)
+      {
+        // discrete upwinding: d_ij = max(0, c_ij, c_ji) on the convective part
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j < n; ++j)
+            if (i != j)
+            {
+              const double d = std::max ({0.0, cell_matrix (i, j), cell_matrix (j, i)});
+              if (d > 0 && j > i)
+              {
+                cell_matrix (i, j) -= d;
+                cell_matrix (j, i) -= d;
+                cell_matrix (i, i) += d;
+                cell_matrix (j, j) += d;
+              }
+            }
+        if (johnson_jackson_walls)
+          for (const auto &face : cell->face_iterators ())
+            if (face->at_boundary () && face->boundary_id () == boundary_ids.wall)
+            {
+              theta_face.reinit (cell, face);
+              flow_face.reinit (flow_cell, face);
+              theta_face.get_function_values (alpha, a_face);
+              theta_face.get_function_values (theta, t_face);
+              flow_face[solids].get_function_values (flow_solution, us_face);
+              for (unsigned int q = 0; q < face_quadrature.size (); ++q)
+              {
+                const double alpha_s     = std::max (a_face[q], 0.0);
+                const double theta_star  = std::max (t_face[q], kt.minimum_temperature);
+                const double g0          = kinetic_theory->radial_distribution (alpha_s);
+                const Tensor<1, dim> n_w = flow_face.normal_vector (q);
+                const double slip       = (us_face[q] - (us_face[q] * n_w) * n_w).norm ();
+                const double generation = std::min (1.0, alpha_s / kt.dilute_fraction) *
+                                          kinetic_theory->wall ().energy_generation (
+                                              alpha_s, g0, theta_star, slip);
+                const double sink =
+                    kinetic_theory->wall ().energy_dissipation (alpha_s, g0, theta_star) /
+                    theta_star;
+                budget.wall_flux += (generation - sink * theta_star) * theta_face.JxW (q);
+                for (unsigned int i = 0; i < n; ++i)
+                {
+                  const double phi_i = theta_face.shape_value (i, q) * theta_face.JxW (q);
+                  cell_rhs (i) += generation * phi_i;
+                  cell_matrix (i, i) += sink * phi_i;
+                }
+              }
+            }
+        granular_energy_matrix.add (dofs, cell_matrix);
+      }
+      rhs.add (dofs, cell_rhs);
+      lumped.add (dofs, cell_mass);
+    }
+    ++flow_cell;
+  }
+  rhs.compress (VectorOperation::add);
+  lumped.compress (VectorOperation::add);
+  granular_energy_budget = budget;
+  for (double *term : {&granular_energy_budget.production,
+                       &granular_energy_budget.dissipation,
+                       &granular_energy_budget.drag_exchange,
+                       &granular_energy_budget.wall_flux})
+    *term = Utilities::MPI::sum (*term, communicator);
+
+  TrilinosWrappers::MPI::Vector solution (rhs);
+  if (algebraic)
+  {
+    for (const auto i : solution.locally_owned_elements ())
+      solution (i) = rhs (i) / lumped (i);
+  }
+  else
+  {
+    granular_energy_matrix.compress (VectorOperation::add);
+    for (const auto i : solution.locally_owned_elements ())
+      solution (i) = theta (i);
+    SolverControl control (
+        500, parameters.linear_solver.scalar_tolerance * rhs.l2_norm () + 1e-300);
+    SolverGMRES<TrilinosWrappers::MPI::Vector>        gmres (control);
+    TrilinosWrappers::PreconditionAMG                 amg;
+    TrilinosWrappers::PreconditionAMG::AdditionalData data;
+    data.elliptic = false;
+    amg.initialize (granular_energy_matrix, data);
+    try
+    {
+      gmres.solve (granular_energy_matrix, solution, rhs, amg);
+    }
+    catch (const SolverControl::NoConvergence &)
+    {
+      return false;
+    }
+  }
+  for (unsigned int i = 0; i < theta.locally_owned_size (); ++i)
+  {
+    const double value = solution[theta.get_partitioner ()->local_to_global (i)];
+    if (!std::isfinite (value))
+      return false;
+    theta.local_element (i) =
+        std::clamp (value, kt.minimum_temperature, kt.maximum_temperature);
+  }
+  theta.update_ghost_values ();
+  return true;
+}
+
+template bool TwoFluidSolver<2>::update_granular_temperature (const BDFCoefficients &,
+                                                              double);
+template bool TwoFluidSolver<3>::update_granular_temperature (const BDFCoefficients &,
+                                                              double);
+} // namespace wetbed
