@@ -108,8 +108,13 @@ bool TwoFluidSolver<dim>::update_granular_temperature (const BDFCoefficients &bd
           cell_mass (i) += theta_values.shape_value (i, q) * JxW;
         if (algebraic)
         {
-          const double value =
-              kinetic_theory->algebraic_temperature (alpha_s, trace_d, d_ddot_d, beta);
+          // as the PDE's production: scaled by min(1, alpha_s/alpha_dilute) (the local
+          // equilibrium of a trace of particles, ~1/alpha_s, is meaningless), clamped
+          const double value = std::clamp (std::min (1.0, alpha_s / kt.dilute_fraction) *
+                                               kinetic_theory->algebraic_temperature (
+                                                   alpha_s, trace_d, d_ddot_d, beta),
+                                           kt.minimum_temperature,
+                                           kt.maximum_temperature);
           for (unsigned int i = 0; i < n; ++i)
             cell_rhs (i) += value * theta_values.shape_value (i, q) * JxW;
           const auto c = kinetic_theory->evaluate (alpha_s, value);

@@ -50,8 +50,10 @@ struct AlgebraicGranularTemperature
     const Number c  = alpha * (2.0 * k3 * d_ddot_d + k2 * trace_d * trace_d);
     if (!(c > 0.0) || !(a > 0.0))
       return Number (0.0);
-    // the root written without cancellation for b > 0: x = 2c / (b + sqrt(b^2 + 4ac))
-    const Number x = 2.0 * c / (b + sqrt (b * b + 4.0 * a * c));
+    // the positive root, written without cancellation for either sign of b
+    const Number root = sqrt (b * b + 4.0 * a * c);
+    const Number x =
+        b >= 0.0 ? Number (2.0 * c / (b + root)) : Number ((root - b) / (2.0 * a));
     return x * x;
   }
 };
