@@ -2,7 +2,7 @@
 """Runs a .prm case with wetbed and checks its monitors.csv against physics.
 
 usage: case_checks.py CHECK WETBED SOURCE_DIR WORK_DIR
-CHECK: ergun | hydrostatic | packed | settling | ramp | ranks | bubbling
+CHECK: ergun | hydrostatic | packed | settling | ramp | kinetic | ranks | bubbling
 """
 import csv
 import math
@@ -152,6 +152,21 @@ elif check == "ramp":
     expect(abs(measured / expected - 1) < 0.05, f"U_mf {measured:.4f} m/s vs the drag law's {expected:.4f} m/s (within 5%)")
     first = next(r["inlet_superficial_velocity"] for r in rows if r["fluidization_index"] >= 1)
     print(f"     (FI first reaches 1 at U = {first:.4f} m/s; bottom packing {profile[-1]:.4f})")
+elif check == "kinetic":
+    # kinetic theory start-up, 0.1 s: algebraic Theta with Johnson-Jackson walls, and the
+    # Theta PDE with free-slip solids walls (the PDE with JJ walls is not stable yet)
+    variants = {"algebraic, Johnson-Jackson walls": "subsection kinetic theory\n set granular temperature = algebraic\nend\n",
+                "PDE, free-slip walls": "subsection boundary conditions\n set solids wall condition = free-slip\nend\n"}
+    for k, (name, overrides) in enumerate(variants.items()):
+        rows = run("kinetic_theory_bed", overrides, 1, os.path.join(work, f"kinetic_{k}"))
+        print(f"  {name}:")
+        bounds_and_mass(rows, 0.61, 1e-12)
+        expect(rows[-1]["time"] >= 0.1 - 1e-12, f"{name}: reached t = 0.1 s")
+        expect(all(r["rejected_steps"] == 0 for r in rows), f"{name}: no rejected step")
+        lo, hi = min(r["theta_min"] for r in rows[1:]), max(r["theta_max"] for r in rows[1:])
+        expect(1e-10 <= lo and hi <= 1.0, f"{name}: Theta in [1e-10, 1] (min {lo:.2e}, max {hi:.2e})")
+        mean = rows[-1]["theta_mean"]
+        expect(1e-6 < mean < 1e-1, f"{name}: solids-weighted mean Theta {mean:.2e} m^2/s^2 in a bubbling bed's range")
 elif check == "ranks":
     # T13: 1 and 2 MPI ranks give the same monitors to solver tolerance
     overrides = "subsection time stepping\n set end time = 0.02\nend\n"
