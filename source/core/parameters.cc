@@ -368,12 +368,12 @@ void LinearSolverParameters::declare_parameters (ParameterHandler &prm)
   prm.declare_entry ("maximum iterations", "300", Integer (1), "FGMRES iteration limit.");
   prm.declare_entry ("restart", "100", Integer (1), "FGMRES restart length.");
   prm.declare_entry ("velocity smoother",
-                     "ILU",
+                     "Chebyshev",
                      Selection ("Chebyshev|ILU"),
-                     "ML smoother on the two-velocity block. ILU (default) sees the "
-                     "drag coupling of the two velocities; Chebyshev (a point smoother) "
-                     "stalled (300 FGMRES iterations) at the bubbling-bed start-up where "
-                     "ILU needs 7-26.");
+                     "ML smoother on the two-velocity block. Chebyshev (default): more "
+                     "FGMRES iterations than ILU but cheaper ones (2D bed start-up 29 vs "
+                     "51 per solve, 3D column start-up 145 s vs 229 s); ILU sees the drag "
+                     "coupling of the two velocities inside a node.");
   prm.declare_entry ("smoother sweeps", "2", Integer (1, 10), "ML smoother sweeps.");
   prm.declare_entry (
       "aggregation threshold", "1e-4", Double (0, 1), "ML aggregation threshold.");
