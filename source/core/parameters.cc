@@ -367,13 +367,14 @@ void LinearSolverParameters::declare_parameters (ParameterHandler &prm)
                      "Relative tolerance of the scalar (alpha correction) solves.");
   prm.declare_entry ("maximum iterations", "300", Integer (1), "FGMRES iteration limit.");
   prm.declare_entry ("restart", "100", Integer (1), "FGMRES restart length.");
-  prm.declare_entry ("velocity smoother",
-                     "Chebyshev",
-                     Selection ("Chebyshev|ILU"),
-                     "ML smoother on the two-velocity block. Chebyshev (default): more "
-                     "FGMRES iterations than ILU but cheaper ones (2D bed start-up 29 vs "
-                     "51 per solve, 3D column start-up 145 s vs 229 s); ILU sees the drag "
-                     "coupling of the two velocities inside a node.");
+  prm.declare_entry (
+      "velocity smoother",
+      "Chebyshev",
+      Selection ("Chebyshev|ILU"),
+      "ML smoother on the two-velocity block. Chebyshev (default): more "
+      "FGMRES iterations than ILU but cheaper ones (2D bed start-up 29 vs "
+      "51 per solve, 3D column start-up 145 s vs 229 s); ILU sees the drag "
+      "coupling of the two velocities inside a node.");
   prm.declare_entry ("smoother sweeps", "2", Integer (1, 10), "ML smoother sweeps.");
   prm.declare_entry (
       "aggregation threshold", "1e-4", Double (0, 1), "ML aggregation threshold.");
