@@ -224,7 +224,14 @@ void BoundaryConditionParameters::declare_parameters (ParameterHandler &prm)
   prm.declare_entry ("hold solids",
                      "false",
                      Bool (),
-                     "Hold u_s = 0 everywhere (a fixed bed, e.g. the Ergun test).");
+                     "Hold the solids velocity at 'held solids velocity' everywhere (a "
+                     "fixed bed, e.g. the Ergun test, or a frozen shear); alpha_s is "
+                     "then not transported, Theta still evolves.");
+  prm.declare_entry ("held solids velocity",
+                     "0; 0; 0",
+                     Anything (),
+                     "u_s (m/s) where solids are held: three ';'-separated expressions "
+                     "in x, y, z, t (muparser); in 2D the third is ignored.");
   prm.leave_subsection ();
 }
 
@@ -236,7 +243,20 @@ void BoundaryConditionParameters::parse_parameters (ParameterHandler &prm)
   solids_wall          = wall_condition_from_string (prm.get ("solids wall condition"));
   solids_wall_friction = prm.get_double ("solids wall friction");
   hold_solids          = prm.get_bool ("hold solids");
+  held_solids_velocity = prm.get ("held solids velocity");
   prm.leave_subsection ();
+  try
+  {
+    dealii::FunctionParser<3> f (3);
+    f.initialize ("x,y,z,t", held_solids_velocity, {}, true);
+    (void)f.value (dealii::Point<3> (), 0);
+  }
+  catch (...)
+  {
+    throw InputError ("boundary conditions/held solids velocity",
+                      "'" + held_solids_velocity +
+                          "' is not three ';'-separated expressions in x, y, z, t");
+  }
   try
   {
     dealii::FunctionParser<1> f (1);

@@ -220,17 +220,28 @@ void TwoFluidSolver<dim>::make_flow_constraints (const double at_time)
     const auto &bc = parameters.boundary;
     if (bc.hold_solids)
     {
-      // every solids dof on owned and ghost cells
+      // every solids dof on owned and ghost cells, at the held velocity u_s(x, t)
+      FunctionParser<3> held (3);
+      held.initialize ("x,y,z,t", bc.held_solids_velocity, {}, true);
+      held.set_time (at_time);
+      const Quadrature<dim> nodes (flow_fe.get_unit_support_points ());
+      FEValues<dim> node_values (mapping, flow_fe, nodes, update_quadrature_points);
       std::vector<types::global_dof_index> dofs (flow_fe.n_dofs_per_cell ());
       for (const auto &cell : flow_dof_handler.active_cell_iterators ())
         if (cell->is_locally_owned () || cell->is_ghost ())
         {
           cell->get_dof_indices (dofs);
+          node_values.reinit (cell);
           for (unsigned int i = 0; i < dofs.size (); ++i)
           {
             const unsigned int c = flow_fe.system_to_component_index (i).first;
-            if (c >= dim && c < 2 * dim && !flow_constraints.is_constrained (dofs[i]))
-              flow_constraints.add_line (dofs[i]);
+            if (c < dim || c >= 2 * dim || flow_constraints.is_constrained (dofs[i]))
+              continue;
+            Point<3> x;
+            for (unsigned int d = 0; d < dim; ++d)
+              x[d] = node_values.quadrature_point (i)[d];
+            flow_constraints.add_line (dofs[i]);
+            flow_constraints.set_inhomogeneity (dofs[i], held.value (x, c - dim));
           }
         }
     }
@@ -490,6 +501,48 @@ double TwoFluidSolver<dim>::solids_mass (const AlphaVector &a) const
 }
 
 template <int dim>
+void TwoFluidSolver<dim>::transport_and_correct_solids (AlphaVector &alpha_momentum,
+                                                        const BDFCoefficients &bdf,
+                                                        const double           dt)
+{
+  // explicit bounded transport from t_n with the midpoint of u_s^n and u_s*
+  {
+    TimerOutput::Scope scope (timer, "alpha transport");
+    alpha_momentum = alpha;
+    alpha_momentum.update_ghost_values ();
+    const FEValuesExtractors::Vector solids (dim);
+    // the transport integrates with QGauss(3) on the alpha cell; the same points on
+    // the flow cell of the same triangulation cell give u_s there
+    FEValues<dim> flow_values (mapping, flow_fe, QGauss<dim> (3), update_values);
+    std::vector<Tensor<1, dim>> u_now, u_before;
+    transport.set_velocity (
+        [&] (const typename DoFHandler<dim>::active_cell_iterator &alpha_cell,
+             const FEValues<dim> & /*alpha_values: QGauss(3) as flow_values*/,
+             std::vector<Tensor<1, dim>> &u)
+        {
+          flow_values.reinit (
+              typename DoFHandler<dim>::active_cell_iterator (&triangulation,
+                                                              alpha_cell->level (),
+                                                              alpha_cell->index (),
+                                                              &flow_dof_handler));
+          u_now.resize (u.size ());
+          u_before.resize (u.size ());
+          flow_values[solids].get_function_values (flow_solution, u_now);
+          flow_values[solids].get_function_values (flow_old, u_before);
+          for (unsigned int i = 0; i < u.size (); ++i)
+            u[i] = 0.5 * (u_now[i] + u_before[i]);
+        });
+    alpha = alpha_old;
+    transport.advance (
+        alpha, dt, parameters.time.transport_cfl, parameters.physical.maximum_packing);
+  }
+  // implicit solids-pressure correction of alpha_s, then of u_s with the same
+  // compaction response, so that velocity and packing stay consistent
+  if (correct_solids_pressure (alpha_momentum, bdf, dt))
+    correct_solids_velocity (alpha_momentum, bdf, dt);
+}
+
+template <int dim>
 bool TwoFluidSolver<dim>::try_time_step (const double dt, const unsigned int bdf_order)
 {
   const BDFCoefficients bdf = bdf_coefficients (bdf_order, dt, previous_time_step);
@@ -508,44 +561,13 @@ bool TwoFluidSolver<dim>::try_time_step (const double dt, const unsigned int bdf
       return false;
     }
     last_krylov_iterations += iterations;
-    if (parameters.boundary.hold_solids || manufactured)
+    if (manufactured)
       continue;
-    // 2. explicit bounded transport from t_n with the midpoint of u_s^n and u_s*
-    {
-      TimerOutput::Scope scope (timer, "alpha transport");
-      alpha_momentum = alpha;
-      alpha_momentum.update_ghost_values ();
-      const FEValuesExtractors::Vector solids (dim);
-      // the transport integrates with QGauss(3) on the alpha cell; the same points on
-      // the flow cell of the same triangulation cell give u_s there
-      FEValues<dim> flow_values (mapping, flow_fe, QGauss<dim> (3), update_values);
-      std::vector<Tensor<1, dim>> u_now, u_before;
-      transport.set_velocity (
-          [&] (const typename DoFHandler<dim>::active_cell_iterator &alpha_cell,
-               const FEValues<dim> & /*alpha_values: QGauss(3) as flow_values*/,
-               std::vector<Tensor<1, dim>> &u)
-          {
-            flow_values.reinit (
-                typename DoFHandler<dim>::active_cell_iterator (&triangulation,
-                                                                alpha_cell->level (),
-                                                                alpha_cell->index (),
-                                                                &flow_dof_handler));
-            u_now.resize (u.size ());
-            u_before.resize (u.size ());
-            flow_values[solids].get_function_values (flow_solution, u_now);
-            flow_values[solids].get_function_values (flow_old, u_before);
-            for (unsigned int i = 0; i < u.size (); ++i)
-              u[i] = 0.5 * (u_now[i] + u_before[i]);
-          });
-      alpha = alpha_old;
-      transport.advance (
-          alpha, dt, parameters.time.transport_cfl, parameters.physical.maximum_packing);
-    }
-    // 3. implicit solids-pressure correction of alpha_s, then of u_s with the same
-    //    compaction response, so that velocity and packing stay consistent
-    if (correct_solids_pressure (alpha_momentum, bdf, dt))
-      correct_solids_velocity (alpha_momentum, bdf, dt);
-    // 4. granular temperature with the new alpha_s and u_s (PDE or local equilibrium)
+    // 2.-3. alpha_s transport and compaction correction (held solids: alpha_s stays)
+    if (!parameters.boundary.hold_solids)
+      transport_and_correct_solids (alpha_momentum, bdf, dt);
+    // 4. granular temperature with the new alpha_s and u_s (PDE or local equilibrium);
+    //    it also evolves in a held solids velocity field
     if (kinetic_theory && !update_granular_temperature (bdf, dt))
     {
       rejection_reason = "granular temperature solve failed";

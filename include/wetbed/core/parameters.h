@@ -62,7 +62,8 @@ struct BoundaryConditionParameters
   std::string   inlet_superficial_velocity; // function of t (m/s)
   WallCondition gas_wall, solids_wall;
   double        solids_wall_friction; // Robin coefficient, kg m^-2 s^-1 (partial slip)
-  bool          hold_solids;          // u_s = 0 everywhere (fixed bed)
+  bool          hold_solids;          // u_s held everywhere (fixed bed, frozen shear)
+  std::string   held_solids_velocity; // u_s(x, y, z, t) where held, ';'-separated
 
   static void declare_parameters (dealii::ParameterHandler &prm);
   void        parse_parameters (dealii::ParameterHandler &prm);

@@ -90,6 +90,12 @@ private:
   nodal_compaction_stiffness (const std::vector<dealii::types::global_dof_index> &dofs,
                               const AlphaVector   &alpha_momentum,
                               std::vector<double> &slopes) const;
+  /** Explicit bounded alpha_s transport from t_n with the midpoint of u_s^n and u_s*,
+   * then the implicit solids-pressure correction of alpha_s and u_s; alpha_momentum
+   * receives the alpha_s the momentum solve saw. */
+  void transport_and_correct_solids (AlphaVector           &alpha_momentum,
+                                     const BDFCoefficients &bdf,
+                                     double                 dt);
   /** Returns false where no compacted region exists (nothing was done). */
   bool correct_solids_pressure (const AlphaVector     &alpha_momentum,
                                 const BDFCoefficients &bdf,

@@ -1,5 +1,6 @@
 #include <wetbed/closures/drag/drag_model.h>
 #include <wetbed/closures/drag/gidaspow.h>
+#include <wetbed/closures/drag/no_drag.h>
 #include <wetbed/closures/drag/syamlal_obrien.h>
 #include <wetbed/closures/drag/wen_yu.h>
 #include <wetbed/core/input_error.h>
@@ -26,6 +27,7 @@ const std::map<std::string, Factory> &registry ()
       entry<SyamlalOBrien> (),
       entry<Gidaspow> (),
       entry<WenYu> (),
+      entry<NoDrag> (),
   };
   return laws;
 }
