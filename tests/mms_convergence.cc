@@ -36,18 +36,29 @@ template <int dim, typename Number>
 struct ExactFields
 {
   bool two_fluid;
+  bool rotation; // T11: both phases rotate about the axis, omega(z) = 1 + z^2/2
 
   Number alpha_s (const Number *x) const
   {
+    if (rotation)
+      return Number (0.3);
     if (!two_fluid)
       return Number (0.0);
     const Number third = dim == 3 ? Number (0.04 * x[2]) : Number (0.0);
     return 0.3 + 0.1 * x[0] - 0.05 * x[1] + third;
   }
+  /** omega(z) (-y, x, 0): u.n = 0 and zero tangential traction on the cylinder wall. */
+  Number rotating (const Number *x, const unsigned int c) const
+  {
+    const Number omega = dim == 3 ? 1.0 + 0.5 * x[2] * x[2] : Number (1.0);
+    return c == 0 ? -omega * x[1] : (c == 1 ? omega * x[0] : Number (0.0));
+  }
   Number gas (const Number *x, const unsigned int c) const
   {
     using std::cos;
     using std::sin;
+    if (rotation)
+      return rotating (x, c);
     const Number z = dim == 3 ? x[2] : Number (0.0);
     switch (c)
     {
@@ -63,6 +74,8 @@ struct ExactFields
   {
     using std::cos;
     using std::sin;
+    if (rotation)
+      return rotating (x, c);
     const Number z = dim == 3 ? x[2] : Number (0.0);
     switch (c)
     {
@@ -78,6 +91,9 @@ struct ExactFields
   {
     using std::cos;
     using std::sin;
+    if (rotation)
+      return 0.5 * (x[0] * x[0] + x[1] * x[1]) +
+             (dim == 3 ? 0.1 * x[dim - 1] : Number (0));
     const Number z = dim == 3 ? x[2] : Number (0.0);
     return 2.0 * cos (pi * x[0]) * sin (pi * x[1]) + z * x[0];
   }
@@ -87,20 +103,24 @@ template <int dim>
 class ManufacturedTwoFluid : public ManufacturedSolution<dim>
 {
 public:
-  ManufacturedTwoFluid (const bool two_fluid, const Parameters &p)
-      : two_fluid (two_fluid), parameters (p),
+  ManufacturedTwoFluid (const bool        two_fluid,
+                        const Parameters &p,
+                        const bool        rotation = false)
+      : two_fluid (two_fluid), rotation (rotation), parameters (p),
         drag (closures::create_drag_model (p.drag_model)),
         stress (closures::create_solids_stress_model (
             p.solids_stress, p.physical, p.kinetic_theory))
   {
   }
 
+  bool slip_walls () const override { return rotation; }
+
   double solids_fraction (const Point<dim> &x) const override
   {
     double c[dim];
     for (unsigned int d = 0; d < dim; ++d)
       c[d] = x[d];
-    return ExactFields<dim, double>{two_fluid}.alpha_s (c);
+    return ExactFields<dim, double>{two_fluid, rotation}.alpha_s (c);
   }
   Tensor<1, dim> gas_velocity (const Point<dim> &x) const override
   {
@@ -115,7 +135,7 @@ public:
     double c[dim];
     for (unsigned int d = 0; d < dim; ++d)
       c[d] = x[d];
-    return ExactFields<dim, double>{two_fluid}.pressure (c);
+    return ExactFields<dim, double>{two_fluid, rotation}.pressure (c);
   }
   Tensor<1, dim> gas_momentum_source (const Point<dim> &x) const override
   {
@@ -161,7 +181,7 @@ private:
     double c[dim];
     for (unsigned int d = 0; d < dim; ++d)
       c[d] = x[d];
-    ExactFields<dim, double> f{two_fluid};
+    ExactFields<dim, double> f{two_fluid, rotation};
     Tensor<1, dim>           u;
     for (unsigned int d = 0; d < dim; ++d)
       u[d] = gas ? f.gas (c, d) : f.solids (c, d);
@@ -191,7 +211,7 @@ private:
     F2 c[dim];
     for (unsigned int d = 0; d < dim; ++d)
       c[d] = F2 (dim, d, F1 (dim, d, x[d]));
-    ExactFields<dim, F2> f{two_fluid};
+    ExactFields<dim, F2> f{two_fluid, rotation};
     Derived              s;
     const F2             a = f.alpha_s (c), p = f.pressure (c);
     s.alpha = a.val ().val ();
@@ -239,17 +259,19 @@ private:
 
   Tensor<1, dim> residual (const Point<dim> &x, const bool gas) const
   {
-    const Derived         s       = derive (x);
-    const auto           &pp      = parameters.physical;
-    const double          alpha_k = gas ? 1 - s.alpha : s.alpha;
-    const double          rho_k   = gas ? pp.gas_density : pp.particle_density;
-    const Tensor<1, dim> &u       = gas ? s.ug : s.us;
-    const Tensor<2, dim> &g       = gas ? s.grad_ug : s.grad_us;
+    const Derived s  = derive (x);
+    const auto   &pp = parameters.physical;
+    // the solids inertia and drag at no less than the residual fraction, as assembled
+    const double          alpha_inertia = std::max (s.alpha, pp.residual_solids_fraction);
+    const double          alpha_k       = gas ? 1 - s.alpha : s.alpha;
+    const double          inertia_k     = gas ? 1 - s.alpha : alpha_inertia;
+    const double          rho_k         = gas ? pp.gas_density : pp.particle_density;
+    const Tensor<1, dim> &u             = gas ? s.ug : s.us;
+    const Tensor<2, dim> &g             = gas ? s.grad_ug : s.grad_us;
     const closures::GasParticleProperties gp{
         pp.gas_density, pp.gas_viscosity, pp.particle_diameter};
-    const double beta =
-        s.alpha > 0 ? drag->coefficient (s.alpha, (s.ug - s.us).norm (), gp) : 0.0;
-    Tensor<1, dim> r = alpha_k * rho_k * (g * u) - (gas ? s.div_tau_g : s.div_tau_s) +
+    const double   beta = drag->coefficient (alpha_inertia, (s.ug - s.us).norm (), gp);
+    Tensor<1, dim> r = inertia_k * rho_k * (g * u) - (gas ? s.div_tau_g : s.div_tau_s) +
                        alpha_k * s.grad_p;
     if (gas)
       r += beta * (s.ug - s.us);
@@ -266,7 +288,7 @@ private:
     return r;
   }
 
-  bool                                         two_fluid;
+  bool                                         two_fluid, rotation;
   Parameters                                   parameters;
   std::unique_ptr<closures::DragModel>         drag;
   std::unique_ptr<closures::SolidsStressModel> stress;
@@ -275,7 +297,8 @@ private:
 std::string case_text (const int          dim,
                        const std::string &mesh,
                        const unsigned int refinement,
-                       const std::string &folder)
+                       const std::string &folder,
+                       const std::string &no_penetration)
 {
   std::ostringstream s;
   s << "set dimension = " << dim << "\n"
@@ -291,23 +314,48 @@ std::string case_text (const int          dim,
        "coefficient = 0.5\n"
     << " set frictional onset = 0.15\nend\n"
     << "subsection stabilization\n set enabled = false\nend\n"
-    << "subsection boundary conditions\n set inlet superficial velocity = 0\nend\n"
+    << "subsection boundary conditions\n set inlet superficial velocity = 0\n"
+    << " set gas wall condition = " << (no_penetration.empty () ? "no-slip" : "free-slip")
+    << "\n set solids wall condition = free-slip\n set no-penetration = "
+    << (no_penetration.empty () ? "Nitsche" : no_penetration) << "\nend\n"
     << "subsection time stepping\n set end time = 1e4\n set initial time step = 1e4\n"
     << " set maximum time step = 1e4\n set bdf order = 1\n set outer iterations = 6\n "
        "set adaptive = false\nend\n"
     << "subsection linear solver\n set relative tolerance = 1e-10\n set maximum "
-       "iterations = 1000\nend\n"
+       "iterations = 5000\nend\n"
     << "subsection output\n set folder = " << folder
     << "\n set field interval = 0\nend\n";
   return s.str ();
 }
+
+/** Errors (u_g L2, H1, u_s L2, H1, p' L2) and the cell count of one refinement level. */
+template <int dim>
+std::pair<std::array<double, 5>, double>
+run_level (const Parameters &parameters, const bool two_fluid, const bool rotation)
+{
+  TwoFluidSolver<dim> solver (parameters, MPI_COMM_WORLD);
+  solver.set_manufactured_solution (
+      std::make_shared<ManufacturedTwoFluid<dim>> (two_fluid, parameters, rotation));
+  solver.run ();
+  const auto r = solver.compute_errors ();
+  return {{r.gas_velocity_l2,
+           r.gas_velocity_h1,
+           r.solids_velocity_l2,
+           r.solids_velocity_h1,
+           r.pressure_l2},
+          double (solver.n_cells ())};
+}
 } // namespace
 
+// usage: test_mms_convergence DIM single|two-fluid|rotation-Nitsche|rotation-strong
+//        SOURCE_DIR WORK_DIR
 int main (int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi (argc, argv, 1);
-  const int                                dim = std::stoi (argv[1]);
-  const bool        two_fluid                  = std::string (argv[2]) == "two-fluid";
+  const int                                dim  = std::stoi (argv[1]);
+  const std::string                        kind = argv[2];
+  const bool two_fluid = kind != "single", rotation = kind.rfind ("rotation", 0) == 0;
+  const std::string no_penetration = rotation ? kind.substr (kind.find ('-') + 1) : "";
   const std::string source = argv[3], work = argv[4];
   const std::string mesh =
       source + (dim == 2 ? "/tests/meshes/square.geo" : "/tests/meshes/cylinder.geo");
@@ -318,43 +366,15 @@ int main (int argc, char **argv)
   std::vector<double>                sizes;
   for (const unsigned int level : levels)
   {
-    const std::string folder = work + "/mms_" + std::to_string (dim) + "d_" + argv[2] +
-                               "_" + std::to_string (level);
+    const std::string folder = work + "/mms_" + std::to_string (dim) + "d_" + kind + "_" +
+                               std::to_string (level);
     std::filesystem::create_directories (folder);
     const std::string prm_file = folder + "/case.prm";
-    std::ofstream (prm_file) << case_text (dim, mesh, level, folder);
+    std::ofstream (prm_file) << case_text (dim, mesh, level, folder, no_penetration);
     dealii::ParameterHandler prm;
     const Parameters         parameters = Parameters::read (prm_file, prm);
-    std::array<double, 5>    e;
-    double                   n_cells;
-    if (dim == 2)
-    {
-      TwoFluidSolver<2> solver (parameters, MPI_COMM_WORLD);
-      solver.set_manufactured_solution (
-          std::make_shared<ManufacturedTwoFluid<2>> (two_fluid, parameters));
-      solver.run ();
-      const auto r = solver.compute_errors ();
-      e            = {r.gas_velocity_l2,
-                      r.gas_velocity_h1,
-                      r.solids_velocity_l2,
-                      r.solids_velocity_h1,
-                      r.pressure_l2};
-      n_cells      = solver.n_cells ();
-    }
-    else
-    {
-      TwoFluidSolver<3> solver (parameters, MPI_COMM_WORLD);
-      solver.set_manufactured_solution (
-          std::make_shared<ManufacturedTwoFluid<3>> (two_fluid, parameters));
-      solver.run ();
-      const auto r = solver.compute_errors ();
-      e            = {r.gas_velocity_l2,
-                      r.gas_velocity_h1,
-                      r.solids_velocity_l2,
-                      r.solids_velocity_h1,
-                      r.pressure_l2};
-      n_cells      = solver.n_cells ();
-    }
+    const auto [e, n_cells] = dim == 2 ? run_level<2> (parameters, two_fluid, rotation)
+                                       : run_level<3> (parameters, two_fluid, rotation);
     errors.push_back (e);
     sizes.push_back (std::pow (n_cells, -1.0 / dim));
   }

@@ -21,9 +21,12 @@ using namespace dealii;
  *       - K_gamma Theta^(3/2) - 3 beta Theta,
  * mu = mu_col + mu_kin (the frictional viscosity does not heat the particles), p_hat =
  * P_kin+col/Theta. Production is explicit and non-negative (viscous heating and
- * compression p_hat Theta* (div u_s)_-), every sink implicit and linearised at the
- * latest Theta*, and scaled by min(1, alpha_s/alpha_dilute) (no heating of the empty
- * freeboard by the shear of a velocity that carries no particles) (dissipation K_gamma
+ * compression p_hat Theta* (div u_s)_-) and scaled by min(1, alpha_s/alpha_dilute) (no
+ * heating of the empty freeboard by the shear of a velocity that carries no particles),
+ * the conductivity scaled the same way (Gidaspow's kappa stays finite as alpha_s -> 0:
+ * unscaled, the empty freeboard is a pure Neumann Laplacian, singular, and its Theta is
+ * whatever the Krylov solver leaves, measured at the cap), every sink implicit and
+ * linearised at the latest Theta* (dissipation K_gamma
  * sqrt(Theta*) Theta, drag exchange 3 beta Theta, expansion p_hat (div u_s)_+ Theta,
  * Johnson-Jackson wall D_w), the mass lumped and the convection upwinded (discrete
  * upwinding on the Galerkin operator), so the matrix is an M-matrix on non-obtuse meshes;
@@ -126,11 +129,13 @@ bool TwoFluidSolver<dim>::update_granular_temperature (const BDFCoefficients &bd
           budget.drag_exchange += 3 * beta * value * JxW;
           continue;
         }
-        const double theta_star = std::max (t_now[q], kt.minimum_temperature);
-        const auto   c          = kinetic_theory->evaluate (alpha_s, theta_star);
-        const double capacity   = 1.5 * rho_s * std::max (alpha_s, residual_alpha);
+        const double theta_star   = std::max (t_now[q], kt.minimum_temperature);
+        const auto   c            = kinetic_theory->evaluate (alpha_s, theta_star);
+        const double capacity     = 1.5 * rho_s * std::max (alpha_s, residual_alpha);
+        const double dilute       = std::min (1.0, alpha_s / kt.dilute_fraction);
+        const double conductivity = dilute * c.conductivity;
         const double heating =
-            std::min (1.0, alpha_s / kt.dilute_fraction) *
+            dilute *
             (2 * c.shear_viscosity * d_ddot_d +
              (c.bulk_viscosity - 2.0 / 3 * c.shear_viscosity) * trace_d * trace_d +
              c.pressure_factor * theta_star * std::max (-trace_d, 0.0));
@@ -149,7 +154,7 @@ bool TwoFluidSolver<dim>::update_granular_temperature (const BDFCoefficients &bd
           for (unsigned int j = 0; j < n; ++j)
             cell_matrix (i, j) +=
                 (capacity * phi_i * (us[q] * theta_values.shape_grad (j, q)) +
-                 c.conductivity *
+                 conductivity *
                      (theta_values.shape_grad (i, q) * theta_values.shape_grad (j, q))) *
                 JxW;
         }

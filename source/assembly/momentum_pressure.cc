@@ -1,3 +1,4 @@
+#include <wetbed/assembly/nitsche_wall.h>
 #include <wetbed/solvers/two_fluid_solver.h>
 
 #include <deal.II/base/quadrature_lib.h>
@@ -55,8 +56,9 @@ void TwoFluidSolver<dim>::assemble_flow_system (const BDFCoefficients &bdf,
   FEFaceValues<dim> face_values (mapping,
                                  flow_fe,
                                  face_quadrature,
-                                 update_values | update_normal_vectors |
-                                     update_quadrature_points | update_JxW_values);
+                                 update_values | update_gradients |
+                                     update_normal_vectors | update_quadrature_points |
+                                     update_JxW_values);
   FEFaceValues<dim> alpha_face_values (mapping, alpha_fe, face_quadrature, update_values);
 
   const unsigned int n_dofs = flow_fe.n_dofs_per_cell ();
@@ -90,7 +92,15 @@ void TwoFluidSolver<dim>::assemble_flow_system (const BDFCoefficients &bdf,
   std::vector<double> alpha_face (face_quadrature.size ()),
       theta_face (face_quadrature.size ());
   const double wall_friction = parameters.boundary.solids_wall_friction;
-  const bool   stabilized    = parameters.stabilization;
+  // weak no-penetration (Nitsche) for each phase that slips on the walls
+  const bool   slip_walls = !manufactured || manufactured->slip_walls ();
+  const bool   nitsche[2] = {slip_walls && parameters.boundary.nitsche &&
+                                 parameters.boundary.gas_wall != WallCondition::no_slip,
+                             slip_walls && parameters.boundary.nitsche &&
+                                 parameters.boundary.solids_wall != WallCondition::no_slip};
+  const double nitsche_gamma =
+      parameters.boundary.nitsche_penalty * std::pow (flow_fe.degree + 1.0, 2);
+  const bool stabilized = parameters.stabilization;
 
   auto alpha_cell = alpha_dof_handler.begin_active ();
   for (const auto &cell : flow_dof_handler.active_cell_iterators ())
@@ -134,12 +144,13 @@ void TwoFluidSolver<dim>::assemble_flow_system (const BDFCoefficients &bdf,
     cell_rhs    = 0;
     for (unsigned int q = 0; q < n_q; ++q)
     {
-      const double         alpha_s = a_s[q], alpha_g = 1.0 - alpha_s;
+      const double alpha_s = a_s[q], alpha_g = 1.0 - alpha_s;
+      // inertia and drag of the solids at no less than the residual fraction
+      const double alpha_inertia        = std::max (alpha_s, pp.residual_solids_fraction);
       const Tensor<1, dim> grad_alpha_s = grad_a_s[q], grad_alpha_g = -grad_a_s[q];
       // closures, once per quadrature point
       const double slip = (ug_lag[q] - us_lag[q]).norm ();
-      const double beta =
-          alpha_s > 0 ? drag->coefficient (alpha_s, slip, gas_particle) : 0.0;
+      const double beta = drag->coefficient (alpha_inertia, slip, gas_particle);
       const SymmetricTensor<2, dim> strain   = symmetrize (grad_us_lag[q]);
       const SymmetricTensor<2, dim> deviator = deviator_tensor<dim> () * strain;
       const closures::SolidsStress  stress   = solids_stress->evaluate (
@@ -147,7 +158,7 @@ void TwoFluidSolver<dim>::assemble_flow_system (const BDFCoefficients &bdf,
       const double mu_s = stress.shear_viscosity, lambda_s = stress.bulk_viscosity;
       const double JxW = fe_values.JxW (q);
 
-      const double inertia_g = alpha_g * rho_g, inertia_s = alpha_s * rho_s;
+      const double inertia_g = alpha_g * rho_g, inertia_s = alpha_inertia * rho_s;
       const double mass_g = bdf.a0 * inertia_g / dt, mass_s = bdf.a0 * inertia_s / dt;
       const Tensor<1, dim> history_g =
           -(bdf.a1 * ug_old[q] + bdf.a2 * ug_old2[q]) * inertia_g / dt;
@@ -271,12 +282,17 @@ void TwoFluidSolver<dim>::assemble_flow_system (const BDFCoefficients &bdf,
       const bool wall_friction_face = partial_slip && id == boundary_ids.wall;
       const bool traction_face      = manufactured && id == boundary_ids.outlet;
       const bool backflow_face      = stabilized && id == boundary_ids.outlet;
-      if (!wall_friction_face && !traction_face && !backflow_face)
+      const bool nitsche_face = id == boundary_ids.wall && (nitsche[0] || nitsche[1]);
+      if (!wall_friction_face && !traction_face && !backflow_face && !nitsche_face)
         continue;
       face_values.reinit (cell, face);
-      std::vector<Tensor<1, dim>> ug_face (face_quadrature.size ());
+      std::vector<Tensor<1, dim>> ug_face (face_quadrature.size ()),
+          us_face (face_quadrature.size ());
+      std::vector<Tensor<2, dim>> grad_us_face (face_quadrature.size ());
       face_values[gas].get_function_values (flow_solution, ug_face);
-      if (wall_friction_face && johnson_jackson_wall)
+      face_values[solids].get_function_values (flow_solution, us_face);
+      face_values[solids].get_function_gradients (flow_solution, grad_us_face);
+      if ((wall_friction_face && johnson_jackson_wall) || nitsche_face)
       {
         alpha_face_values.reinit (alpha_cell, face);
         alpha_face_values.get_function_values (alpha, alpha_face);
@@ -298,6 +314,46 @@ void TwoFluidSolver<dim>::assemble_flow_system (const BDFCoefficients &bdf,
           const double a = std::max (alpha_face[q], 0.0);
           friction       = kinetic_theory->wall ().shear_coefficient (
               a, kinetic_theory->radial_distribution (a), std::max (theta_face[q], 0.0));
+        }
+        if (nitsche_face)
+        {
+          // the phase coefficients as in the volume terms, at the face point
+          const double a    = alpha_face[q];
+          const double slip = (ug_face[q] - us_face[q]).norm ();
+          const double beta = drag->coefficient (
+              std::max (a, pp.residual_solids_fraction), slip, gas_particle);
+          const SymmetricTensor<2, dim> deviator =
+              deviator_tensor<dim> () * symmetrize (grad_us_face[q]);
+          const closures::SolidsStress stress = solids_stress->evaluate (
+              {a, theta_face[q], std::sqrt (2.0 * deviator * deviator)});
+          double compaction = 0;
+          for (unsigned int j = 0; j < alpha_nodal.size (); ++j)
+            compaction += pressure_nodal[j] * alpha_face_values.shape_value (j, q);
+          const double h_wall = h;
+          auto         scale = [&] (const double mu, const double inertia, const double u)
+          {
+            return mu + inertia * u * h_wall + inertia * h_wall * h_wall * bdf.a0 / dt +
+                   beta * h_wall * h_wall;
+          };
+          const std::array<NitschePhase, 2> phases = {
+              NitschePhase{nitsche[0],
+                           0,
+                           1 - a,
+                           (1 - a) * mu_g,
+                           -2.0 / 3.0 * (1 - a) * mu_g,
+                           scale ((1 - a) * mu_g, (1 - a) * rho_g, ug_face[q].norm ()),
+                           0.0},
+              NitschePhase{nitsche[1],
+                           dim,
+                           a,
+                           stress.shear_viscosity,
+                           stress.bulk_viscosity - 2.0 / 3.0 * stress.shear_viscosity,
+                           scale (stress.shear_viscosity,
+                                  std::max (a, pp.residual_solids_fraction) * rho_s,
+                                  us_face[q].norm ()),
+                           compaction + stress.kinetic_pressure}};
+          add_nitsche_no_penetration (
+              face_values, q, component, phases, nitsche_gamma, h, cell_matrix, cell_rhs);
         }
         Tensor<1, dim> traction[2];
         if (traction_face)

@@ -48,10 +48,14 @@ void KineticTheoryParameters::declare_parameters (ParameterHandler &prm)
                      "1e-3",
                      Double (),
                      "eps (1/s) in P_fr sin(phi)/(2 sqrt(I_2D + eps^2)).");
-  prm.declare_entry ("minimum shear viscosity",
-                     "1e-5",
-                     Double (),
-                     "Floor of mu_s (Pa s) where alpha_s or Theta vanish.");
+  prm.declare_entry (
+      "minimum shear viscosity",
+      "1e-3",
+      Double (),
+      "Floor of mu_s (Pa s) where alpha_s or Theta vanish (about the dilute "
+      "kinetic-theory viscosity 0.1 rho_s d sqrt(Theta) at Theta ~ 1e-4). With 1e-5 "
+      "the dilute splash-zone solids velocity decouples and oscillates (+-30 m/s at "
+      "alpha_s ~ 1e-5 next to the walls) and FGMRES breaks down (doc/theory.md).");
   prm.declare_entry (
       "minimum granular temperature", "1e-10", Double (), "Floor of Theta (m^2/s^2).");
   prm.declare_entry (

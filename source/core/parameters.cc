@@ -93,6 +93,13 @@ void PhysicalProperties::declare_parameters (ParameterHandler &prm)
                      "0.61",
                      Double (),
                      "alpha_max: the solids volume fraction never exceeds it.");
+  prm.declare_entry ("residual solids fraction",
+                     "1e-6",
+                     Double (),
+                     "The solids inertia and drag are evaluated at max(alpha_s, this) "
+                     "(OpenFOAM's residualAlpha): where there are no particles the "
+                     "solids velocity relaxes to the gas velocity instead of being set "
+                     "by a vanishing viscosity alone.");
   prm.declare_entry (
       "gravity",
       "0, -9.81, 0",
@@ -110,6 +117,7 @@ void PhysicalProperties::parse_parameters (ParameterHandler &prm)
   particle_density         = prm.get_double ("particle density");
   particle_diameter        = prm.get_double ("particle diameter");
   maximum_packing          = prm.get_double ("maximum packing");
+  residual_solids_fraction = prm.get_double ("residual solids fraction");
   const std::string g_text = prm.get ("gravity");
   prm.leave_subsection ();
 
@@ -123,6 +131,9 @@ void PhysicalProperties::parse_parameters (ParameterHandler &prm)
   require (maximum_packing > 0.0 && maximum_packing < 1.0,
            "physical properties/maximum packing",
            "must lie in (0, 1)");
+  require (residual_solids_fraction >= 0.0 && residual_solids_fraction <= 1e-2,
+           "physical properties/residual solids fraction",
+           "must lie in [0, 1e-2]");
   std::vector<std::string> parts = dealii::Utilities::split_string_list (g_text, ',');
   require (parts.size () == 3,
            "physical properties/gravity",
@@ -221,6 +232,17 @@ void BoundaryConditionParameters::declare_parameters (ParameterHandler &prm)
                      Double (0),
                      "Robin coefficient C (kg m^-2 s^-1) of the partial-slip traction "
                      "-C u_slip.");
+  prm.declare_entry ("no-penetration",
+                     "Nitsche",
+                     Selection ("Nitsche|strong"),
+                     "How u.n = 0 is imposed on slip walls (free-slip, partial-slip, "
+                     "Johnson-Jackson): symmetric Nitsche (weak, with the exact mapped "
+                     "normal at the quadrature points) or strong no-normal-flux "
+                     "constraints at the nodes.");
+  prm.declare_entry ("Nitsche penalty",
+                     "10",
+                     Double (),
+                     "gamma_0 of the Nitsche penalty gamma_0 (degree + 1)^2 mu*/h.");
   prm.declare_entry ("hold solids",
                      "false",
                      Bool (),
@@ -243,6 +265,8 @@ void BoundaryConditionParameters::parse_parameters (ParameterHandler &prm)
   solids_wall          = wall_condition_from_string (prm.get ("solids wall condition"));
   solids_wall_friction = prm.get_double ("solids wall friction");
   hold_solids          = prm.get_bool ("hold solids");
+  nitsche              = prm.get ("no-penetration") == "Nitsche";
+  nitsche_penalty      = prm.get_double ("Nitsche penalty");
   held_solids_velocity = prm.get ("held solids velocity");
   prm.leave_subsection ();
   try
@@ -269,6 +293,9 @@ void BoundaryConditionParameters::parse_parameters (ParameterHandler &prm)
                       "'" + inlet_superficial_velocity +
                           "' is not a valid expression in t");
   }
+  require (nitsche_penalty >= 1.0,
+           "boundary conditions/Nitsche penalty",
+           "must be >= 1 (the symmetric form needs a large enough penalty)");
   require (solids_wall != WallCondition::partial_slip || solids_wall_friction > 0,
            "boundary conditions/solids wall friction",
            "must be > 0 for a partial-slip wall");

@@ -205,19 +205,43 @@ void TwoFluidSolver<dim>::make_flow_constraints (const double at_time)
   flow_constraints.reinit (relevant);
   DoFTools::make_hanging_node_constraints (flow_dof_handler, flow_constraints);
 
+  const auto &bc = parameters.boundary;
+  // slip walls: no penetration as constraints unless imposed by Nitsche in the assembly
+  auto wall = [&] (const unsigned int   first,
+                   const WallCondition  condition,
+                   const ComponentMask &mask)
+  {
+    if (condition == WallCondition::no_slip)
+      VectorTools::interpolate_boundary_values (
+          mapping,
+          flow_dof_handler,
+          ids.wall,
+          Functions::ZeroFunction<dim> (2 * dim + 1),
+          flow_constraints,
+          mask);
+    else if (!bc.nitsche)
+      VectorTools::compute_no_normal_flux_constraints (
+          flow_dof_handler, first, {ids.wall}, flow_constraints, mapping);
+  };
+  if (manufactured && manufactured->slip_walls ())
+  {
+    wall (dim, bc.solids_wall, solids_mask);
+    wall (0, bc.gas_wall, gas_mask);
+  }
   if (manufactured)
   {
-    // verification: exact velocities on inlet and walls, traction on the outlet
+    // verification: exact velocities on the inlet and (unless they slip) the walls,
+    // traction on the outlet
     const ManufacturedFlowFunction<dim> exact (*manufactured);
     ComponentMask                       velocities (2 * dim + 1, true);
     velocities.set (2 * dim, false);
     for (const auto id : {ids.wall, ids.inlet})
-      VectorTools::interpolate_boundary_values (
-          mapping, flow_dof_handler, id, exact, flow_constraints, velocities);
+      if (id != ids.wall || !manufactured->slip_walls ())
+        VectorTools::interpolate_boundary_values (
+            mapping, flow_dof_handler, id, exact, flow_constraints, velocities);
   }
   else
   {
-    const auto &bc = parameters.boundary;
     if (bc.hold_solids)
     {
       // every solids dof on owned and ghost cells, at the held velocity u_s(x, t)
@@ -246,22 +270,6 @@ void TwoFluidSolver<dim>::make_flow_constraints (const double at_time)
         }
     }
     // walls first: their constraints take precedence at the corners
-    auto wall = [&] (const unsigned int   first,
-                     const WallCondition  condition,
-                     const ComponentMask &mask)
-    {
-      if (condition == WallCondition::no_slip)
-        VectorTools::interpolate_boundary_values (
-            mapping,
-            flow_dof_handler,
-            ids.wall,
-            Functions::ZeroFunction<dim> (2 * dim + 1),
-            flow_constraints,
-            mask);
-      else
-        VectorTools::compute_no_normal_flux_constraints (
-            flow_dof_handler, first, {ids.wall}, flow_constraints, mapping);
-    };
     wall (dim, bc.solids_wall, solids_mask);
     wall (0, bc.gas_wall, gas_mask);
     // inlet: the gas enters against gravity with the superficial velocity U, i.e. at

@@ -16,6 +16,9 @@ class ManufacturedSolution
 {
 public:
   virtual ~ManufacturedSolution () = default;
+  /** true: the walls keep the .prm's slip conditions (the exact fields satisfy u.n = 0
+   * and a zero tangential traction there); false: exact velocities on the walls. */
+  virtual bool slip_walls () const { return false; }
 
   virtual double                 solids_fraction (const dealii::Point<dim> &x) const = 0;
   virtual dealii::Tensor<1, dim> gas_velocity (const dealii::Point<dim> &x) const    = 0;

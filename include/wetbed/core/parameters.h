@@ -27,6 +27,7 @@ struct PhysicalProperties
   double               gas_density, gas_viscosity;
   double               particle_density, particle_diameter;
   double               maximum_packing;
+  double               residual_solids_fraction; // floor of alpha_s in inertia and drag
   dealii::Tensor<1, 3> gravity;
 
   static void declare_parameters (dealii::ParameterHandler &prm);
@@ -62,6 +63,8 @@ struct BoundaryConditionParameters
   std::string   inlet_superficial_velocity; // function of t (m/s)
   WallCondition gas_wall, solids_wall;
   double        solids_wall_friction; // Robin coefficient, kg m^-2 s^-1 (partial slip)
+  bool          nitsche;              // weak no-penetration on slip walls (else strong)
+  double        nitsche_penalty;      // gamma_0
   bool          hold_solids;          // u_s held everywhere (fixed bed, frozen shear)
   std::string   held_solids_velocity; // u_s(x, y, z, t) where held, ';'-separated
 
