@@ -1,0 +1,123 @@
+#!/usr/bin/env python3
+"""The dry bubbling bed (prm/bubbling_bed_2d.prm, kinetic theory, Johnson-Jackson walls)
+over a long run with the granular temperature PDE and the algebraic model: time-averaged
+fluidization index after start-up, bounds of alpha_s and Theta at every step, rejected
+steps, mass drift, cost per simulated second and FGMRES iterations. Prints a markdown
+table for doc/benchmarks.md and draws doc/bubbling_bed_fi.png.
+
+usage: python3 benchmarks/bubbling_bed_fi.py [--end-time 5] [--start-up 1]
+           [--models PDE algebraic] [--parallel] [--summarize-only]
+(build first: bash scripts/build.sh). --parallel runs the models at the same time, one
+core each; --summarize-only re-reads the monitors of an earlier run.
+"""
+import argparse
+import csv
+import os
+import re
+import subprocess
+import sys
+
+try:
+    import matplotlib  # Debian's python3-matplotlib lives with /usr/bin/python3
+except ImportError:
+    if os.path.exists("/usr/bin/python3") and os.path.realpath(sys.executable) != "/usr/bin/python3":
+        os.execv("/usr/bin/python3", ["/usr/bin/python3"] + sys.argv)
+
+root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+parser = argparse.ArgumentParser()
+parser.add_argument("--end-time", type=float, default=5.0)
+parser.add_argument("--start-up", type=float, default=1.0, help="seconds left out of the FI mean")
+parser.add_argument("--models", nargs="+", default=["PDE", "algebraic"])
+parser.add_argument("--parallel", action="store_true")
+parser.add_argument("--summarize-only", action="store_true")
+parser.add_argument("--work", default=os.path.join(root, "build", "benchmarks", "bubbling_bed_fi"))
+args = parser.parse_args()
+os.makedirs(args.work, exist_ok=True)
+
+base = open(os.path.join(root, "prm", "bubbling_bed_2d.prm")).read().replace("../meshes/", root + "/meshes/")
+
+
+def case(model):
+    folder = os.path.join(args.work, model)
+    prm = os.path.join(args.work, model + ".prm")
+    open(prm, "w").write(base + f"""
+subsection kinetic theory
+  set granular temperature = {model}
+end
+subsection time stepping
+  set end time = {args.end_time}
+end
+subsection output
+  set folder = {folder}
+  set field interval = 0.1
+  set progress interval = 200
+end
+""")
+    return prm, folder, os.path.join(args.work, model + ".log")
+
+
+if not args.summarize_only:
+    runs = []
+    for model in args.models:
+        prm, folder, log = case(model)
+        p = subprocess.Popen([os.path.join(root, "build", "wetbed"), prm], stdout=open(log, "w"), stderr=subprocess.STDOUT)
+        if args.parallel:
+            runs.append(p)
+        else:
+            p.wait()
+    for p in runs:
+        p.wait()
+
+rows, series = [], {}
+for model in args.models:
+    prm, folder, log = case(model)
+    data = list(csv.DictReader(open(os.path.join(folder, "monitors.csv"))))
+    t = [float(r["time"]) for r in data]
+    dt = [float(r["time_step"]) for r in data]
+    fi = [float(r["fluidization_index"]) for r in data]
+    after = [i for i in range(len(t)) if t[i] > args.start_up]
+    mean_fi = sum(fi[i] * dt[i] for i in after) / sum(dt[i] for i in after)
+    # window means (0.5 s) to show how much the slugging bed swings
+    windows = []
+    w0 = args.start_up
+    while w0 < t[-1] - 1e-9:
+        idx = [i for i in after if w0 < t[i] <= w0 + 0.5]
+        if idx:
+            windows.append(sum(fi[i] * dt[i] for i in idx) / sum(dt[i] for i in idx))
+        w0 += 0.5
+    text = open(log).read()
+    fin = re.search(r"Finished: (\d+) steps \((\d+) rejected\), wall ([\d.e+-]+) s, ([\d.e+-]+) s per simulated second", text)
+    steps, rejected, wall, per_second = (int(fin.group(1)), int(fin.group(2)), float(fin.group(3)), float(fin.group(4))) if fin else (len(data) - 1, int(data[-1]["rejected_steps"]), float("nan"), float("nan"))
+    rows.append({
+        "model": model, "end": t[-1], "mean_fi": mean_fi, "fi_min_window": min(windows), "fi_max_window": max(windows),
+        "steps": steps, "rejected": rejected, "wall": wall, "per_second": per_second,
+        "krylov": sum(float(r["krylov_iterations"]) for r in data[1:]) / max(len(data) - 1, 1),
+        "alpha_min": min(float(r["alpha_s_min"]) for r in data), "alpha_max": max(float(r["alpha_s_max"]) for r in data),
+        "theta_min": min(float(r["theta_min"]) for r in data), "theta_max": max(float(r["theta_max"]) for r in data),
+        "drift": max(abs(float(r["solids_mass_drift"])) for r in data),
+    })
+    series[model] = (t, fi)
+
+print(f"| model | simulated | FI mean (t > {args.start_up:g} s) | 0.5 s windows (min, max) | steps | rejected | alpha_s range | Theta range (m²/s²) | mass drift | FGMRES its/step | wall (s) | s per simulated s |")
+print("|---|---|---|---|---|---|---|---|---|---|---|---|")
+for r in rows:
+    print(f"| {r['model']} | {r['end']:.2f} s | {r['mean_fi']:.4f} | {r['fi_min_window']:.3f}, {r['fi_max_window']:.3f} | {r['steps']} | {r['rejected']} | "
+          f"[{r['alpha_min']:.1e}, {r['alpha_max']:.4f}] | [{r['theta_min']:.1e}, {r['theta_max']:.3g}] | {r['drift']:.1e} | {r['krylov']:.1f} | {r['wall']:.0f} | {r['per_second']:.0f} |")
+
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+
+fig, ax = plt.subplots(figsize=(8, 3.5))
+for model, (t, fi) in series.items():
+    ax.plot(t, fi, lw=0.6, label=f"{model}")
+ax.axhline(1.0, color="k", lw=0.8)
+ax.axvline(args.start_up, color="gray", ls="--", lw=0.8)
+ax.set_xlabel("t (s)")
+ax.set_ylabel("FI = ΔP A / (M g)")
+ax.set_ylim(0, 2.5)
+ax.legend()
+ax.set_title("2D bubbling bed, kinetic theory + Johnson–Jackson walls")
+fig.tight_layout()
+fig.savefig(os.path.join(root, "doc", "bubbling_bed_fi.png"), dpi=110)
+print("wrote doc/bubbling_bed_fi.png")
