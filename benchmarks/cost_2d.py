@@ -15,13 +15,9 @@ import re
 import subprocess
 import sys
 
-try:
-    import matplotlib  # Debian's python3-matplotlib lives with /usr/bin/python3
-except ImportError:
-    if os.path.exists("/usr/bin/python3") and os.path.realpath(sys.executable) != "/usr/bin/python3":
-        os.execv("/usr/bin/python3", ["/usr/bin/python3"] + sys.argv)
+from benchmark_setup import repository_root
 
-root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+root = repository_root()
 parser = argparse.ArgumentParser()
 parser.add_argument("--end-time", type=float, default=0.05)
 parser.add_argument("--ranks", type=int, default=2)
