@@ -1,0 +1,166 @@
+#include <wetbed/solvers/two_fluid_solver.h>
+
+#include <deal.II/base/quadrature.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/numerics/vector_tools.h>
+
+namespace wetbed
+{
+using namespace dealii;
+
+/**
+ * Constraints of the flow system at time `at_time`: hanging nodes; slip walls (strong
+ * no-normal-flux unless Nitsche imposes it in the assembly) or no-slip walls; a held
+ * solids velocity; the inlet gas velocity U(t)/alpha_g against gravity with solids held
+ * at the distributor and retained at the outlet; with a manufactured solution its exact
+ * velocities. And the Schur preconditioner's pressure pinned on the outlet.
+ */
+template <int dim>
+void TwoFluidSolver<dim>::make_flow_constraints (const double at_time)
+{
+  const IndexSet relevant = DoFTools::extract_locally_relevant_dofs (flow_dof_handler);
+  const FEValuesExtractors::Vector gas (0), solids (dim);
+  const ComponentMask              gas_mask    = flow_fe.component_mask (gas);
+  const ComponentMask              solids_mask = flow_fe.component_mask (solids);
+  const auto                       ids         = boundary_ids;
+
+  flow_constraints.clear ();
+  flow_constraints.reinit (relevant);
+  DoFTools::make_hanging_node_constraints (flow_dof_handler, flow_constraints);
+
+  const auto &bc = parameters.boundary;
+  // slip walls: no penetration as constraints unless imposed by Nitsche in the assembly
+  auto wall = [&] (const unsigned int   first,
+                   const WallCondition  condition,
+                   const ComponentMask &mask)
+  {
+    if (condition == WallCondition::no_slip)
+      VectorTools::interpolate_boundary_values (
+          mapping,
+          flow_dof_handler,
+          ids.wall,
+          Functions::ZeroFunction<dim> (2 * dim + 1),
+          flow_constraints,
+          mask);
+    else if (!bc.nitsche)
+      VectorTools::compute_no_normal_flux_constraints (
+          flow_dof_handler, first, {ids.wall}, flow_constraints, mapping);
+  };
+  if (manufactured && manufactured->slip_walls ())
+  {
+    wall (dim, bc.solids_wall, solids_mask);
+    wall (0, bc.gas_wall, gas_mask);
+  }
+  if (manufactured)
+  {
+    // verification: exact velocities on the inlet and (unless they slip) the walls,
+    // traction on the outlet
+    const ManufacturedFlowFunction<dim> exact (*manufactured);
+    ComponentMask                       velocities (2 * dim + 1, true);
+    velocities.set (2 * dim, false);
+    for (const auto id : {ids.wall, ids.inlet})
+      if (id != ids.wall || !manufactured->slip_walls ())
+        VectorTools::interpolate_boundary_values (
+            mapping, flow_dof_handler, id, exact, flow_constraints, velocities);
+  }
+  else
+  {
+    if (bc.hold_solids)
+    {
+      // every solids dof on owned and ghost cells, at the held velocity u_s(x, t)
+      FunctionParser<3> held (3);
+      held.initialize ("x,y,z,t", bc.held_solids_velocity, {}, true);
+      held.set_time (at_time);
+      const Quadrature<dim> nodes (flow_fe.get_unit_support_points ());
+      FEValues<dim> node_values (mapping, flow_fe, nodes, update_quadrature_points);
+      std::vector<types::global_dof_index> dofs (flow_fe.n_dofs_per_cell ());
+      for (const auto &cell : flow_dof_handler.active_cell_iterators ())
+        if (cell->is_locally_owned () || cell->is_ghost ())
+        {
+          cell->get_dof_indices (dofs);
+          node_values.reinit (cell);
+          for (unsigned int i = 0; i < dofs.size (); ++i)
+          {
+            const unsigned int c = flow_fe.system_to_component_index (i).first;
+            if (c < dim || c >= 2 * dim || flow_constraints.is_constrained (dofs[i]))
+              continue;
+            Point<3> x;
+            for (unsigned int d = 0; d < dim; ++d)
+              x[d] = node_values.quadrature_point (i)[d];
+            flow_constraints.add_line (dofs[i]);
+            flow_constraints.set_inhomogeneity (dofs[i], held.value (x, c - dim));
+          }
+        }
+    }
+    // walls first: their constraints take precedence at the corners
+    wall (dim, bc.solids_wall, solids_mask);
+    wall (0, bc.gas_wall, gas_mask);
+    // inlet: the gas enters against gravity with the superficial velocity U, i.e. at
+    // U/alpha_g with the local gas fraction at each node, so the volume flux is U
+    // whatever bed sits on the distributor; solids are held at the distributor and
+    // retained at the outlet (a grid)
+    {
+      Tensor<1, dim> up;
+      for (unsigned int d = 0; d < dim; ++d)
+        up[d] = -parameters.physical.gravity[d];
+      up /= up.norm ();
+      const double          U = inlet_superficial_velocity (at_time);
+      const Quadrature<dim> nodes (flow_fe.get_unit_support_points ());
+      FEValues<dim>         alpha_at_nodes (mapping, alpha_fe, nodes, update_values);
+      std::vector<double>   alpha_values (nodes.size ());
+      std::vector<types::global_dof_index> dofs (flow_fe.n_dofs_per_cell ());
+      auto                                 alpha_cell = alpha_dof_handler.begin_active ();
+      for (const auto &cell : flow_dof_handler.active_cell_iterators ())
+      {
+        if ((cell->is_locally_owned () || cell->is_ghost ()) && cell->at_boundary ())
+          for (const unsigned int f : cell->face_indices ())
+            if (cell->face (f)->at_boundary () &&
+                cell->face (f)->boundary_id () == ids.inlet)
+            {
+              alpha_at_nodes.reinit (alpha_cell);
+              alpha_at_nodes.get_function_values (alpha, alpha_values);
+              cell->get_dof_indices (dofs);
+              for (unsigned int i = 0; i < dofs.size (); ++i)
+              {
+                const unsigned int c = flow_fe.system_to_component_index (i).first;
+                if (c >= dim || !flow_fe.has_support_on_face (i, f) ||
+                    flow_constraints.is_constrained (dofs[i]))
+                  continue;
+                flow_constraints.add_line (dofs[i]);
+                flow_constraints.set_inhomogeneity (dofs[i],
+                                                    U / (1.0 - alpha_values[i]) * up[c]);
+              }
+            }
+        ++alpha_cell;
+      }
+    }
+    for (const auto id : {ids.inlet, ids.outlet})
+      VectorTools::interpolate_boundary_values (
+          mapping,
+          flow_dof_handler,
+          id,
+          Functions::ZeroFunction<dim> (2 * dim + 1),
+          flow_constraints,
+          solids_mask);
+  }
+  flow_constraints.close ();
+
+  // Schur preconditioner: the pressure is fixed where the outlet is traction-free
+  schur_constraints.clear ();
+  schur_constraints.reinit (relevant);
+  DoFTools::make_hanging_node_constraints (flow_dof_handler, schur_constraints);
+  ComponentMask pressure_mask (2 * dim + 1, false);
+  pressure_mask.set (2 * dim, true);
+  VectorTools::interpolate_boundary_values (mapping,
+                                            flow_dof_handler,
+                                            ids.outlet,
+                                            Functions::ZeroFunction<dim> (2 * dim + 1),
+                                            schur_constraints,
+                                            pressure_mask);
+  schur_constraints.close ();
+}
+
+template void TwoFluidSolver<2>::make_flow_constraints (double);
+template void TwoFluidSolver<3>::make_flow_constraints (double);
+} // namespace wetbed
