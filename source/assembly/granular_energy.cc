@@ -113,7 +113,7 @@ bool TwoFluidSolver<dim>::update_granular_temperature (const BDFCoefficients &bd
         {
           // as the PDE's production: scaled by min(1, alpha_s/alpha_dilute) (the local
           // equilibrium of a trace of particles, ~1/alpha_s, is meaningless), clamped
-          const double value = std::clamp (std::min (1.0, alpha_s / kt.dilute_fraction) *
+          const double value = std::clamp (kt.dilute_weight (alpha_s) *
                                                kinetic_theory->algebraic_temperature (
                                                    alpha_s, trace_d, d_ddot_d, beta),
                                            kt.minimum_temperature,
@@ -132,7 +132,7 @@ bool TwoFluidSolver<dim>::update_granular_temperature (const BDFCoefficients &bd
         const double theta_star   = std::max (t_now[q], kt.minimum_temperature);
         const auto   c            = kinetic_theory->evaluate (alpha_s, theta_star);
         const double capacity     = 1.5 * rho_s * std::max (alpha_s, residual_alpha);
-        const double dilute       = std::min (1.0, alpha_s / kt.dilute_fraction);
+        const double dilute       = kt.dilute_weight (alpha_s);
         const double conductivity = dilute * c.conductivity;
         const double heating =
             dilute *
@@ -191,7 +191,7 @@ bool TwoFluidSolver<dim>::update_granular_temperature (const BDFCoefficients &bd
                 const double g0          = kinetic_theory->radial_distribution (alpha_s);
                 const Tensor<1, dim> n_w = flow_face.normal_vector (q);
                 const double slip       = (us_face[q] - (us_face[q] * n_w) * n_w).norm ();
-                const double generation = std::min (1.0, alpha_s / kt.dilute_fraction) *
+                const double generation = kt.dilute_weight (alpha_s) *
                                           kinetic_theory->wall ().energy_generation (
                                               alpha_s, g0, theta_star, slip);
                 const double sink =

@@ -91,7 +91,10 @@ void TwoFluidSolver<dim>::assemble_flow_system (const BDFCoefficients &bdf,
       parameters.boundary.solids_wall == WallCondition::johnson_jackson;
   std::vector<double> alpha_face (face_quadrature.size ()),
       theta_face (face_quadrature.size ());
-  const double wall_friction = parameters.boundary.solids_wall_friction;
+  std::vector<Tensor<1, dim>> ug_face (face_quadrature.size ()),
+      us_face (face_quadrature.size ());
+  std::vector<Tensor<2, dim>> grad_us_face (face_quadrature.size ());
+  const double                wall_friction = parameters.boundary.solids_wall_friction;
   // weak no-penetration (Nitsche) for each phase that slips on the walls
   const bool   slip_walls = !manufactured || manufactured->slip_walls ();
   const bool   nitsche[2] = {slip_walls && parameters.boundary.nitsche &&
@@ -286,12 +289,12 @@ void TwoFluidSolver<dim>::assemble_flow_system (const BDFCoefficients &bdf,
       if (!wall_friction_face && !traction_face && !backflow_face && !nitsche_face)
         continue;
       face_values.reinit (cell, face);
-      std::vector<Tensor<1, dim>> ug_face (face_quadrature.size ()),
-          us_face (face_quadrature.size ());
-      std::vector<Tensor<2, dim>> grad_us_face (face_quadrature.size ());
       face_values[gas].get_function_values (flow_solution, ug_face);
-      face_values[solids].get_function_values (flow_solution, us_face);
-      face_values[solids].get_function_gradients (flow_solution, grad_us_face);
+      if (nitsche_face)
+      {
+        face_values[solids].get_function_values (flow_solution, us_face);
+        face_values[solids].get_function_gradients (flow_solution, grad_us_face);
+      }
       if ((wall_friction_face && johnson_jackson_wall) || nitsche_face)
       {
         alpha_face_values.reinit (alpha_cell, face);
@@ -336,22 +339,22 @@ void TwoFluidSolver<dim>::assemble_flow_system (const BDFCoefficients &bdf,
                    beta * h_wall * h_wall;
           };
           const std::array<NitschePhase, 2> phases = {
-              NitschePhase{nitsche[0],
-                           0,
-                           1 - a,
-                           (1 - a) * mu_g,
-                           -2.0 / 3.0 * (1 - a) * mu_g,
-                           scale ((1 - a) * mu_g, (1 - a) * rho_g, ug_face[q].norm ()),
-                           0.0},
-              NitschePhase{nitsche[1],
-                           dim,
-                           a,
-                           stress.shear_viscosity,
-                           stress.bulk_viscosity - 2.0 / 3.0 * stress.shear_viscosity,
-                           scale (stress.shear_viscosity,
-                                  std::max (a, pp.residual_solids_fraction) * rho_s,
-                                  us_face[q].norm ()),
-                           compaction + stress.kinetic_pressure}};
+              {NitschePhase{nitsche[0],
+                            0,
+                            1 - a,
+                            (1 - a) * mu_g,
+                            -2.0 / 3.0 * (1 - a) * mu_g,
+                            scale ((1 - a) * mu_g, (1 - a) * rho_g, ug_face[q].norm ()),
+                            0.0},
+               NitschePhase{nitsche[1],
+                            dim,
+                            a,
+                            stress.shear_viscosity,
+                            stress.bulk_viscosity - 2.0 / 3.0 * stress.shear_viscosity,
+                            scale (stress.shear_viscosity,
+                                   std::max (a, pp.residual_solids_fraction) * rho_s,
+                                   us_face[q].norm ()),
+                            compaction + stress.kinetic_pressure}}};
           add_nitsche_no_penetration (
               face_values, q, component, phases, nitsche_gamma, h, cell_matrix, cell_rhs);
         }

@@ -69,9 +69,7 @@ void TwoFluidSolver<dim>::make_flow_constraints (const double at_time)
     if (bc.hold_solids)
     {
       // every solids dof on owned and ghost cells, at the held velocity u_s(x, t)
-      FunctionParser<3> held (3);
-      held.initialize ("x,y,z,t", bc.held_solids_velocity, {}, true);
-      held.set_time (at_time);
+      held_velocity_function.set_time (at_time);
       const Quadrature<dim> nodes (flow_fe.get_unit_support_points ());
       FEValues<dim> node_values (mapping, flow_fe, nodes, update_quadrature_points);
       std::vector<types::global_dof_index> dofs (flow_fe.n_dofs_per_cell ());
@@ -89,7 +87,8 @@ void TwoFluidSolver<dim>::make_flow_constraints (const double at_time)
             for (unsigned int d = 0; d < dim; ++d)
               x[d] = node_values.quadrature_point (i)[d];
             flow_constraints.add_line (dofs[i]);
-            flow_constraints.set_inhomogeneity (dofs[i], held.value (x, c - dim));
+            flow_constraints.set_inhomogeneity (
+                dofs[i], held_velocity_function.value (x, c - dim));
           }
         }
     }

@@ -50,6 +50,8 @@ TwoFluidSolver<dim>::TwoFluidSolver (const Parameters &parameters, MPI_Comm comm
 {
   inlet_velocity_function.initialize (
       "t", parameters.boundary.inlet_superficial_velocity, {});
+  held_velocity_function.initialize (
+      "x,y,z,t", parameters.boundary.held_solids_velocity, {}, true);
 }
 
 template <int dim>

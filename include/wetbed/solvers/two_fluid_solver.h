@@ -150,11 +150,12 @@ private:
   // granular temperature Theta (m^2/s^2) on the alpha_s space; zero without KTGF
   AlphaVector theta, theta_old, theta_old2;
 
-  std::unique_ptr<closures::DragModel>             drag;
-  std::unique_ptr<closures::SolidsStressModel>     solids_stress;
-  const closures::KineticTheory                   *kinetic_theory; // null without KTGF
-  closures::GasParticleProperties                  gas_particle;
-  mutable dealii::FunctionParser<1>                inlet_velocity_function;
+  std::unique_ptr<closures::DragModel>         drag;
+  std::unique_ptr<closures::SolidsStressModel> solids_stress;
+  const closures::KineticTheory               *kinetic_theory; // null without KTGF
+  closures::GasParticleProperties              gas_particle;
+  mutable dealii::FunctionParser<1>            inlet_velocity_function;
+  dealii::FunctionParser<3> held_velocity_function{3}; // u_s(x, y, z, t) where held
   std::shared_ptr<const ManufacturedSolution<dim>> manufactured;
 
   VolumeFractionTransport<dim>         transport;
