@@ -86,7 +86,7 @@ Result run (const Case &c, const std::string &source, const std::string &folder)
 std::pair<double, double> sink_coefficients (const Parameters &p)
 {
   const auto stress = closures::create_solids_stress_model (
-      p.solids_stress, p.physical, p.kinetic_theory);
+      p.solids_stress, p.physical, p.kinetic_theory, p.wet);
   const auto                            drag = closures::create_drag_model (p.drag_model);
   const closures::GasParticleProperties gp{
       p.physical.gas_density, p.physical.gas_viscosity, p.physical.particle_diameter};
@@ -192,10 +192,10 @@ void shear (const std::string &source, const std::string &work)
   c.end_time             = 0.02;
   const Result algebraic = run (c, source, work + "/shear_algebraic");
 
-  const auto stress =
-      closures::create_solids_stress_model (pde.parameters.solids_stress,
-                                            pde.parameters.physical,
-                                            pde.parameters.kinetic_theory);
+  const auto stress = closures::create_solids_stress_model (pde.parameters.solids_stress,
+                                                            pde.parameters.physical,
+                                                            pde.parameters.kinetic_theory,
+                                                            pde.parameters.wet);
   // D = sym(grad u_s): D_xy = G/2, D:D = G^2/2, tr D = 0
   const double balance = stress->kinetic_theory ()->algebraic_temperature (
       alpha_s, 0.0, 0.5 * shear_rate * shear_rate, 0.0);

@@ -109,7 +109,7 @@ public:
       : two_fluid (two_fluid), rotation (rotation), parameters (p),
         drag (closures::create_drag_model (p.drag_model)),
         stress (closures::create_solids_stress_model (
-            p.solids_stress, p.physical, p.kinetic_theory))
+            p.solids_stress, p.physical, p.kinetic_theory, p.wet))
   {
   }
 

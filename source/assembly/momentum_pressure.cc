@@ -83,10 +83,13 @@ void TwoFluidSolver<dim>::assemble_flow_system (const BDFCoefficients &bdf,
   std::vector<double>         phi (n_dofs);
   std::vector<Tensor<1, dim>> grad_phi (n_dofs);
 
+  // verification runs keep the wall conditions only with slip walls (else: exact values)
+  const bool slip_walls = !manufactured || manufactured->slip_walls ();
   const bool partial_slip =
       (parameters.boundary.solids_wall == WallCondition::partial_slip ||
        parameters.boundary.solids_wall == WallCondition::johnson_jackson) &&
-      !manufactured;
+      slip_walls;
+  const bool wall_source = manufactured && slip_walls;
   const bool johnson_jackson_wall =
       parameters.boundary.solids_wall == WallCondition::johnson_jackson;
   std::vector<double> alpha_face (face_quadrature.size ()),
@@ -96,7 +99,6 @@ void TwoFluidSolver<dim>::assemble_flow_system (const BDFCoefficients &bdf,
   std::vector<Tensor<2, dim>> grad_us_face (face_quadrature.size ());
   const double                wall_friction = parameters.boundary.solids_wall_friction;
   // weak no-penetration (Nitsche) for each phase that slips on the walls
-  const bool   slip_walls = !manufactured || manufactured->slip_walls ();
   const bool   nitsche[2] = {slip_walls && parameters.boundary.nitsche &&
                                  parameters.boundary.gas_wall != WallCondition::no_slip,
                              slip_walls && parameters.boundary.nitsche &&
@@ -286,7 +288,9 @@ void TwoFluidSolver<dim>::assemble_flow_system (const BDFCoefficients &bdf,
       const bool traction_face      = manufactured && id == boundary_ids.outlet;
       const bool backflow_face      = stabilized && id == boundary_ids.outlet;
       const bool nitsche_face = id == boundary_ids.wall && (nitsche[0] || nitsche[1]);
-      if (!wall_friction_face && !traction_face && !backflow_face && !nitsche_face)
+      const bool source_face  = wall_source && id == boundary_ids.wall;
+      if (!wall_friction_face && !traction_face && !backflow_face && !nitsche_face &&
+          !source_face)
         continue;
       face_values.reinit (cell, face);
       face_values[gas].get_function_values (flow_solution, ug_face);
@@ -365,6 +369,10 @@ void TwoFluidSolver<dim>::assemble_flow_system (const BDFCoefficients &bdf,
           traction[1] =
               manufactured->solids_traction (face_values.quadrature_point (q), n);
         }
+        if (source_face)
+          for (unsigned int k = 0; k < 2; ++k)
+            traction[k] = manufactured->wall_traction_source (
+                face_values.quadrature_point (q), n, k);
         for (unsigned int i = 0; i < n_dofs; ++i)
         {
           const unsigned int ci = component[i];
@@ -372,7 +380,7 @@ void TwoFluidSolver<dim>::assemble_flow_system (const BDFCoefficients &bdf,
             continue;
           const unsigned int k = ci / dim, d = ci % dim;
           const double       phi_i = face_values.shape_value (i, q);
-          if (traction_face)
+          if (traction_face || source_face)
             cell_rhs (i) += traction[k][d] * phi_i * JxW;
           if (backflow > 0 && k == 0)
             for (unsigned int j = 0; j < n_dofs; ++j)

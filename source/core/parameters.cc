@@ -22,11 +22,6 @@ using dealii::Patterns::Selection;
 
 namespace
 {
-void require_positive (const double value, const std::string &where)
-{
-  require (value > 0.0, where, "must be > 0 (got " + std::to_string (value) + ")");
-}
-
 WallCondition wall_condition_from_string (const std::string &name)
 {
   if (name == "no-slip")
@@ -507,6 +502,7 @@ void Parameters::declare_parameters (ParameterHandler &prm)
   prm.leave_subsection ();
   SolidsStressParameters::declare_parameters (prm);
   KineticTheoryParameters::declare_parameters (prm);
+  WetParticleParameters::declare_parameters (prm);
   prm.enter_subsection ("stabilization");
   prm.declare_entry ("enabled",
                      "true",
@@ -531,6 +527,8 @@ void Parameters::parse_parameters (ParameterHandler &prm)
   prm.leave_subsection ();
   solids_stress.parse_parameters (prm, physical.maximum_packing);
   kinetic_theory.parse_parameters (prm, physical.maximum_packing);
+  wet.parse_parameters (
+      prm, solids_stress.model == "kinetic theory", kinetic_theory.algebraic);
   prm.enter_subsection ("stabilization");
   stabilization = prm.get_bool ("enabled");
   prm.leave_subsection ();

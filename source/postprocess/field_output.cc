@@ -110,11 +110,24 @@ typename TwoFluidSolver<dim>::Errors TwoFluidSolver<dim>::compute_errors () cons
                                        &mask);
     return VectorTools::compute_global_error (triangulation, cellwise, type);
   };
-  return {norm (0, dim, VectorTools::L2_norm),
-          norm (0, dim, VectorTools::H1_seminorm),
-          norm (dim, dim, VectorTools::L2_norm),
-          norm (dim, dim, VectorTools::H1_seminorm),
-          norm (2 * dim, 1, VectorTools::L2_norm)};
+  Errors errors{norm (0, dim, VectorTools::L2_norm),
+                norm (0, dim, VectorTools::H1_seminorm),
+                norm (dim, dim, VectorTools::L2_norm),
+                norm (dim, dim, VectorTools::H1_seminorm),
+                norm (2 * dim, 1, VectorTools::L2_norm)};
+  if (manufactured->has_granular_temperature ())
+  {
+    const ManufacturedTemperatureFunction<dim> exact_theta (*manufactured);
+    for (const auto type : {VectorTools::L2_norm, VectorTools::H1_seminorm})
+    {
+      VectorTools::integrate_difference (
+          mapping, alpha_dof_handler, theta, exact_theta, cellwise, quadrature, type);
+      (type == VectorTools::L2_norm ? errors.granular_temperature_l2
+                                    : errors.granular_temperature_h1) =
+          VectorTools::compute_global_error (triangulation, cellwise, type);
+    }
+  }
+  return errors;
 }
 
 template void                      TwoFluidSolver<2>::write_fields () const;

@@ -37,8 +37,10 @@ TwoFluidSolver<dim>::TwoFluidSolver (const Parameters &parameters, MPI_Comm comm
       flow_fe (FE_Q<dim> (2), 2 * dim, FE_Q<dim> (1), 1),
       flow_dof_handler (triangulation), alpha_fe (1), alpha_dof_handler (triangulation),
       drag (closures::create_drag_model (parameters.drag_model)),
-      solids_stress (closures::create_solids_stress_model (
-          parameters.solids_stress, parameters.physical, parameters.kinetic_theory)),
+      solids_stress (closures::create_solids_stress_model (parameters.solids_stress,
+                                                           parameters.physical,
+                                                           parameters.kinetic_theory,
+                                                           parameters.wet)),
       kinetic_theory (solids_stress->kinetic_theory ()),
       gas_particle{parameters.physical.gas_density,
                    parameters.physical.gas_viscosity,
@@ -267,6 +269,11 @@ void TwoFluidSolver<dim>::set_initial_state ()
   alpha_old  = alpha;
   alpha_old2 = alpha;
   theta      = kinetic_theory ? parameters.kinetic_theory.initial_temperature : 0.0;
+  if (kinetic_theory && manufactured && manufactured->has_granular_temperature ())
+    VectorTools::interpolate (mapping,
+                              alpha_dof_handler,
+                              ManufacturedTemperatureFunction<dim> (*manufactured),
+                              theta);
   theta.update_ghost_values ();
   theta_old  = theta;
   theta_old2 = theta;
@@ -427,7 +434,17 @@ bool TwoFluidSolver<dim>::try_time_step (const double dt, const unsigned int bdf
     }
     last_krylov_iterations += iterations;
     if (manufactured)
+    {
+      // verification: alpha_s stays the exact field; Theta is solved for where it is
+      // manufactured too
+      if (kinetic_theory && manufactured->has_granular_temperature () &&
+          !update_granular_temperature (bdf, dt))
+      {
+        rejection_reason = "granular temperature solve failed";
+        return false;
+      }
       continue;
+    }
     // 2.-3. alpha_s transport and compaction correction (held solids: alpha_s stays)
     if (!parameters.boundary.hold_solids)
       transport_and_correct_solids (alpha_momentum, bdf, dt);

@@ -25,4 +25,10 @@ require (const bool condition, const std::string &where, const std::string &reas
   if (!condition)
     throw InputError (where, reason);
 }
+
+/** Throws an InputError naming `where` unless value > 0. */
+inline void require_positive (const double value, const std::string &where)
+{
+  require (value > 0.0, where, "must be > 0 (got " + std::to_string (value) + ")");
+}
 } // namespace wetbed

@@ -39,6 +39,68 @@ public:
   virtual dealii::Tensor<1, dim>
   solids_traction (const dealii::Point<dim>     &x,
                    const dealii::Tensor<1, dim> &n) const = 0;
+
+  /** Only with slip_walls(): the tangential traction of phase k (0 gas, 1 solids) on a
+   * wall that the wall condition does not account for, (sigma_k n)_t plus C_JJ u_s,t on
+   * a Johnson-Jackson wall; added to the momentum right-hand side on the walls. */
+  virtual dealii::Tensor<1, dim>
+  wall_traction_source (const dealii::Point<dim> & /*x*/,
+                        const dealii::Tensor<1, dim> & /*n*/,
+                        const unsigned int /*phase*/) const
+  {
+    return {};
+  }
+
+  /** true: the granular temperature is manufactured too (the kinetic theory with the
+   * PDE), imposed initially, solved for with the sources below and compared. */
+  virtual bool   has_granular_temperature () const { return false; }
+  virtual double granular_temperature (const dealii::Point<dim> & /*x*/) const
+  {
+    return 0;
+  }
+  /** Right-hand side of the granular-energy equation. */
+  virtual double granular_energy_source (const dealii::Point<dim> & /*x*/) const
+  {
+    return 0;
+  }
+  /** kappa dTheta/dn of the exact fields on the boundary, less the Johnson-Jackson
+   * wall flux G_w - D_w where that condition applies (the solver imposes it). */
+  virtual double
+  granular_energy_boundary_source (const dealii::Point<dim> & /*x*/,
+                                   const dealii::Tensor<1, dim> & /*n*/,
+                                   const bool /*johnson_jackson_wall*/) const
+  {
+    return 0;
+  }
+};
+
+/** The manufactured Theta as a deal.II Function (error norms, interpolation). */
+template <int dim>
+class ManufacturedTemperatureFunction : public dealii::Function<dim>
+{
+public:
+  explicit ManufacturedTemperatureFunction (const ManufacturedSolution<dim> &m) : m (m) {}
+  double value (const dealii::Point<dim> &x, const unsigned int = 0) const override
+  {
+    return m.granular_temperature (x);
+  }
+  dealii::Tensor<1, dim> gradient (const dealii::Point<dim> &x,
+                                   const unsigned int = 0) const override
+  {
+    const double           h = 1e-6;
+    dealii::Tensor<1, dim> g;
+    for (unsigned int d = 0; d < dim; ++d)
+    {
+      dealii::Point<dim> plus = x, minus = x;
+      plus[d] += h;
+      minus[d] -= h;
+      g[d] = (value (plus) - value (minus)) / (2 * h);
+    }
+    return g;
+  }
+
+private:
+  const ManufacturedSolution<dim> &m;
 };
 
 /**

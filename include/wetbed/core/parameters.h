@@ -3,6 +3,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/tensor.h>
 #include <wetbed/core/kinetic_theory_parameters.h>
+#include <wetbed/core/wet_particle_parameters.h>
 
 #include <string>
 
@@ -136,6 +137,7 @@ struct Parameters
   std::string                 drag_model;
   SolidsStressParameters      solids_stress;
   KineticTheoryParameters     kinetic_theory;
+  WetParticleParameters       wet;
   BoundaryConditionParameters boundary;
   InitialConditionParameters  initial;
   TimeSteppingParameters      time;

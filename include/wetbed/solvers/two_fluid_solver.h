@@ -57,12 +57,12 @@ public:
   /** Advances one accepted time step (retrying smaller steps as needed). */
   void advance ();
 
-  /** Errors of u_g, u_s (L2 and H1 seminorm) and p' (L2) against the manufactured
-   * solution. */
+  /** Errors of u_g, u_s (L2 and H1 seminorm), p' (L2) and, where manufactured, Theta
+   * (L2 and H1 seminorm; else 0) against the manufactured solution. */
   struct Errors
   {
     double gas_velocity_l2, gas_velocity_h1, solids_velocity_l2, solids_velocity_h1,
-        pressure_l2;
+        pressure_l2, granular_temperature_l2 = 0, granular_temperature_h1 = 0;
   };
   Errors compute_errors () const;
 

@@ -7,7 +7,8 @@
 namespace wetbed::closures
 {
 KineticTheory::KineticTheory (const KineticTheoryParameters &p,
-                              const PhysicalProperties      &physical)
+                              const PhysicalProperties      &physical,
+                              const WetParticleParameters   &wet)
     : granular{physical.particle_density,
                physical.particle_diameter,
                p.restitution,
@@ -21,6 +22,13 @@ KineticTheory::KineticTheory (const KineticTheoryParameters &p,
               physical.maximum_packing,
               physical.particle_density}
 {
+  if (wet.enabled ())
+    wet_particles = std::make_unique<WetParticles> (
+        wet.liquid,
+        WetParticleMaterial{
+            physical.particle_density, physical.particle_diameter, p.restitution},
+        wet.rupture_distance,
+        wet.restitution);
 }
 
 KineticTheory::~KineticTheory () = default;
@@ -43,8 +51,10 @@ KineticTheory::Coefficients KineticTheory::evaluate (const double alpha_s,
                       viscosity_law->value (a, t, g0, granular);
   c.bulk_viscosity = CollisionalTerms::bulk_viscosity (a, t, g0, granular);
   c.conductivity   = conductivity_law->value (a, t, g0, granular);
+  c.restitution =
+      wet_particles ? wet_particles->restitution (a, t) : granular.restitution;
   c.dissipation_factor =
-      CollisionalTerms::dissipation (a, 1.0, g0, granular, granular.restitution);
+      CollisionalTerms::dissipation (a, 1.0, g0, granular, c.restitution);
   return c;
 }
 

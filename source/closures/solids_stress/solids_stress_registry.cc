@@ -8,7 +8,8 @@ namespace wetbed::closures
 std::unique_ptr<SolidsStressModel>
 create_solids_stress_model (const SolidsStressParameters  &p,
                             const PhysicalProperties      &physical,
-                            const KineticTheoryParameters &kinetic)
+                            const KineticTheoryParameters &kinetic,
+                            const WetParticleParameters   &wet)
 {
   const JohnsonJacksonPressureCoefficients friction{p.frictional_coefficient,
                                                     p.frictional_exponent_n,
@@ -20,12 +21,13 @@ create_solids_stress_model (const SolidsStressParameters  &p,
     return std::make_unique<ConstantViscosityRheology> (p.shear_viscosity, friction);
   if (p.model == KineticTheoryRheology::model_name)
     return std::make_unique<KineticTheoryRheology> (
-        std::make_shared<const KineticTheory> (kinetic, physical),
+        std::make_shared<const KineticTheory> (kinetic, physical, wet),
         friction,
         kinetic.internal_friction_angle,
         kinetic.maximum_frictional_viscosity,
         kinetic.strain_rate_regularisation,
-        kinetic.minimum_shear_viscosity);
+        kinetic.minimum_shear_viscosity,
+        wet.pressure_in_solids_pressure);
   throw InputError ("solids stress/model", "unknown model '" + p.model + "'");
 }
 

@@ -3,6 +3,7 @@
 #include <wetbed/closures/kinetic_theory/algebraic_granular_temperature.h>
 #include <wetbed/closures/kinetic_theory/granular_material.h>
 #include <wetbed/closures/walls/johnson_jackson_wall.h>
+#include <wetbed/closures/wet/wet_particles.h>
 
 #include <memory>
 
@@ -10,6 +11,7 @@ namespace wetbed
 {
 struct KineticTheoryParameters;
 struct PhysicalProperties;
+struct WetParticleParameters;
 } // namespace wetbed
 
 namespace wetbed::closures
@@ -23,8 +25,11 @@ namespace wetbed::closures
 class KineticTheory
 {
 public:
+  /** With a positive liquid loading in `wet` the wet closures are built and e_wet
+   * replaces e in the collisional dissipation (only there). */
   KineticTheory (const KineticTheoryParameters &parameters,
-                 const PhysicalProperties      &physical);
+                 const PhysicalProperties      &physical,
+                 const WetParticleParameters   &wet);
   ~KineticTheory ();
 
   struct Coefficients
@@ -35,6 +40,7 @@ public:
     double bulk_viscosity;     // lambda_s (Pa s)
     double conductivity;       // kappa (kg m^-1 s^-1)
     double dissipation_factor; // gamma / Theta^(3/2)
+    double restitution;        // e in gamma: e_wet in a wet scene, else e_dry
   };
   Coefficients evaluate (double alpha_s, double theta) const;
 
@@ -48,6 +54,8 @@ public:
 
   const GranularMaterial   &material () const { return granular; }
   const JohnsonJacksonWall &wall () const { return jj_wall; }
+  /** The wet closures; null in a dry scene. */
+  const WetParticles *wet () const { return wet_particles.get (); }
 
 private:
   GranularMaterial                          granular;
@@ -56,5 +64,6 @@ private:
   std::unique_ptr<KineticTheoryCoefficient> viscosity_law, conductivity_law;
   AlgebraicGranularTemperature              equilibrium;
   JohnsonJacksonWall                        jj_wall;
+  std::unique_ptr<WetParticles>             wet_particles;
 };
 } // namespace wetbed::closures

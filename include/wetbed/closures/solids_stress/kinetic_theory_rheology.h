@@ -13,7 +13,8 @@ namespace wetbed::closures
  * Kinetic theory of granular flow with friction (DESIGN s2):
  *   P_s = P_fr(alpha_s) [Johnson-Jackson, the compaction pressure] + alpha rho Theta
  *         [1 + 2(1+e) alpha g0] [Lun, the kinetic pressure],
- *   mu_s = mu_col + mu_kin + mu_fr, mu_fr = Schaeffer with P_fr (capped),
+ *   mu_s = mu_col + mu_kin + mu_fr + mu_wet, mu_fr = Schaeffer with P_fr (capped),
+ *   mu_wet the liquid-bridge viscosity of a wet scene (P_wet optionally added to P_s),
  *   lambda_s = Lun bulk viscosity,
  * mu_s floored where alpha_s or Theta vanish (the solids block stays regular).
  */
@@ -27,11 +28,13 @@ public:
                          double                               friction_angle,
                          double maximum_frictional_viscosity,
                          double strain_regularisation,
-                         double minimum_viscosity)
+                         double minimum_viscosity,
+                         bool   wet_pressure_in_solids_pressure)
       : theory (std::move (theory)), friction (friction), friction_angle (friction_angle),
         maximum_frictional_viscosity (maximum_frictional_viscosity),
         strain_regularisation (strain_regularisation),
-        minimum_viscosity (minimum_viscosity)
+        minimum_viscosity (minimum_viscosity),
+        wet_pressure_in_solids_pressure (wet_pressure_in_solids_pressure)
   {
   }
 
@@ -52,9 +55,19 @@ public:
     SolidsStress s;
     s.pressure            = pressure;
     s.pressure_derivative = johnson_jackson_pressure_derivative (state.alpha_s, friction);
-    s.kinetic_pressure = c.pressure_factor * std::max (state.granular_temperature, 0.0);
-    s.shear_viscosity =
-        std::max (c.shear_viscosity + frictional_viscosity, minimum_viscosity);
+    s.kinetic_pressure   = c.pressure_factor * std::max (state.granular_temperature, 0.0);
+    double wet_viscosity = 0;
+    if (const WetParticles *wet = theory->wet ())
+    {
+      const WetClosures w = wet->evaluate (state.alpha_s,
+                                           state.granular_temperature,
+                                           0.25 * state.shear_rate * state.shear_rate);
+      wet_viscosity       = w.viscosity;
+      if (wet_pressure_in_solids_pressure)
+        s.kinetic_pressure += w.pressure;
+    }
+    s.shear_viscosity = std::max (
+        c.shear_viscosity + frictional_viscosity + wet_viscosity, minimum_viscosity);
     s.bulk_viscosity = c.bulk_viscosity;
     return s;
   }
@@ -66,5 +79,6 @@ private:
   JohnsonJacksonPressureCoefficients   friction;
   double friction_angle, maximum_frictional_viscosity, strain_regularisation,
       minimum_viscosity;
+  bool wet_pressure_in_solids_pressure;
 };
 } // namespace wetbed::closures

@@ -10,6 +10,7 @@ namespace wetbed
 struct SolidsStressParameters;
 struct PhysicalProperties;
 struct KineticTheoryParameters;
+struct WetParticleParameters;
 } // namespace wetbed
 
 namespace wetbed::closures
@@ -51,7 +52,8 @@ public:
 std::unique_ptr<SolidsStressModel>
 create_solids_stress_model (const SolidsStressParameters  &parameters,
                             const PhysicalProperties      &physical,
-                            const KineticTheoryParameters &kinetic);
+                            const KineticTheoryParameters &kinetic,
+                            const WetParticleParameters   &wet);
 
 std::string solids_stress_model_names ();
 } // namespace wetbed::closures
