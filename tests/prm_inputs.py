@@ -95,6 +95,11 @@ cases = [
     ("unknown physical group", "subsection mesh\n set wall = side\nend", "mesh/wall"),
     ("cylinder in 2D", "subsection mesh\n set cylindrical wall = true\nend", "mesh/cylindrical wall"),
     ("corrupt mesh", None, "mesh/file"),
+    ("wet particles without kinetic theory", "subsection solids stress\n set model = constant viscosity\nend\nsubsection boundary conditions\n set solids wall condition = free-slip\nend\nsubsection wet particles\n set liquid loading = 1e-3\nend", "wet particles/liquid loading"),
+    ("wet particles with the algebraic Theta", "subsection kinetic theory\n set granular temperature = algebraic\nend\nsubsection wet particles\n set liquid loading = 1e-3\nend", "wet particles/liquid loading"),
+    ("negative liquid viscosity", "subsection wet particles\n set liquid viscosity = -0.5\nend", "wet particles/liquid viscosity"),
+    ("unknown rupture distance", "subsection wet particles\n set rupture distance = Newton\nend", "rupture distance"),
+    ("angle of stability 90", "subsection wet particles\n set angle of stability = 90\nend", "wet particles/angle of stability"),
     ("unwritable output folder", "subsection output\n set folder = /proc/wetbed-output\nend", "output/folder"),
 ]
 corrupt = os.path.join(work, "corrupt.msh")
@@ -118,9 +123,25 @@ for args, expected_code in ((["--help"], 0), (["--print-parameters"], 0), ([], 1
     if p.returncode != expected_code:
         failures.append(f"wetbed {' '.join(args)}: exit {p.returncode}, expected {expected_code}")
 
+# 4. wetbed closures: the wet case reports the regimes; bad options exit 2 naming them
+wet_case = os.path.join(work, "wet_closures.prm")
+with open(wet_case, "w") as f:
+    f.write(with_mesh(open(os.path.join(source, "prm", "wet_column_2d.prm")).read(), "wet"))
+p = subprocess.run([wetbed, "closures", wet_case, "--alpha-s", "0.2,0.45,0.59"], capture_output=True, text=True)
+lines = p.stdout.strip().splitlines()
+header = lines[0].split(",") if lines else []
+regimes = [row.split(",")[header.index("regime")] for row in lines[1:]] if "regime" in header else []
+if p.returncode != 0 or regimes != ["ruptured", "bridged", "contact"]:
+    failures.append(f"wetbed closures (wet): exit {p.returncode}, regimes {regimes}")
+for args, expected in ((["--alpha-s", "0.3,x"], "--alpha-s"), (["--theta", "-1"], "Theta"),
+                       (["--colour", "red"], "--colour"), (["--points", "/nonexistent"], "/nonexistent")):
+    p = subprocess.run([wetbed, "closures", wet_case] + args, capture_output=True, text=True)
+    if p.returncode != 2 or expected not in p.stderr:
+        failures.append(f"wetbed closures {' '.join(args)}: exit {p.returncode}, '{p.stderr.strip()}'")
+
 n = len(cases)
 print(f"{n} bad-input cases checked")
 for f in failures:
     print("FAILED:", f)
-print(f"{n + 4 - len(failures)} passed, {len(failures)} failed")
+print(f"{n + 9 - len(failures)} passed, {len(failures)} failed")
 sys.exit(1 if failures else 0)

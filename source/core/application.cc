@@ -1,6 +1,7 @@
 #include <wetbed/core/application.h>
 #include <wetbed/core/input_error.h>
 #include <wetbed/core/parameters.h>
+#include <wetbed/postprocess/closure_table.h>
 #include <wetbed/solvers/two_fluid_solver.h>
 
 #include <deal.II/base/mpi.h>
@@ -20,6 +21,12 @@ void print_usage (std::ostream &out)
          "  wetbed CASE.prm                run the case (mpirun -np N wetbed CASE.prm)\n"
          "  wetbed --print-parameters      every parameter with default and "
          "documentation\n"
+         "  wetbed closures CASE.prm [--alpha-s A,..] [--theta T,..] [--shear-rate "
+         "G,..]\n"
+         "                 [--points FILE]  every dry and wet closure of the case at "
+         "the\n"
+         "                                 points (CSV on stdout; FILE rows: alpha_s "
+         "theta shear_rate)\n"
          "  wetbed --help                  this text\n\n"
          "Results go to `output/folder` of the case: parameters.prm, monitors.csv,\n"
          "fields_*.pvtu. Exit status: 0 done, 1 usage, 2 bad input, 3 run failed.\n";
@@ -40,6 +47,25 @@ void run_case (const Parameters &parameters, const dealii::ParameterHandler &prm
 int run_application (int argc, char **argv)
 {
   const bool root = dealii::Utilities::MPI::this_mpi_process (MPI_COMM_WORLD) == 0;
+  if (argc >= 3 && std::string (argv[1]) == "closures")
+  {
+    try
+    {
+      dealii::ParameterHandler prm;
+      const Parameters         parameters = Parameters::read (argv[2], prm);
+      const auto               points =
+          closure_points (std::vector<std::string> (argv + 3, argv + argc), parameters);
+      if (root)
+        write_closure_table (parameters, points, std::cout);
+      return 0;
+    }
+    catch (const InputError &e)
+    {
+      if (root)
+        std::cerr << "wetbed: error: " << e.what () << std::endl;
+      return 2;
+    }
+  }
   if (argc != 2)
   {
     if (root)

@@ -55,19 +55,20 @@ public:
     SolidsStress s;
     s.pressure            = pressure;
     s.pressure_derivative = johnson_jackson_pressure_derivative (state.alpha_s, friction);
-    s.kinetic_pressure   = c.pressure_factor * std::max (state.granular_temperature, 0.0);
-    double wet_viscosity = 0;
+    s.kinetic_pressure = c.pressure_factor * std::max (state.granular_temperature, 0.0);
+    s.frictional_viscosity = frictional_viscosity;
     if (const WetParticles *wet = theory->wet ())
     {
       const WetClosures w = wet->evaluate (state.alpha_s,
                                            state.granular_temperature,
                                            0.25 * state.shear_rate * state.shear_rate);
-      wet_viscosity       = w.viscosity;
+      s.wet_viscosity     = w.viscosity;
+      s.wet_pressure      = w.pressure;
       if (wet_pressure_in_solids_pressure)
         s.kinetic_pressure += w.pressure;
     }
     s.shear_viscosity = std::max (
-        c.shear_viscosity + frictional_viscosity + wet_viscosity, minimum_viscosity);
+        c.shear_viscosity + frictional_viscosity + s.wet_viscosity, minimum_viscosity);
     s.bulk_viscosity = c.bulk_viscosity;
     return s;
   }

@@ -31,6 +31,10 @@ struct SolidsStress
   double shear_viscosity;      // mu_s (Pa s), MFIX convention (no alpha_s in front)
   double bulk_viscosity;       // lambda_s (Pa s)
   double kinetic_pressure = 0; // P_kin+col(alpha_s, Theta) (Pa), at the point
+  // parts of mu_s and of the pressure, for reports (wetbed closures)
+  double frictional_viscosity = 0; // mu_fr (Pa s), Schaeffer
+  double wet_viscosity        = 0; // mu_wet (Pa s), liquid bridges
+  double wet_pressure         = 0; // P_wet (Pa) (in kinetic_pressure only if chosen)
 };
 
 class KineticTheory;
