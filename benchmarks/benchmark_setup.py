@@ -1,6 +1,9 @@
-"""Shared start of the benchmark scripts: run under Debian's /usr/bin/python3 (where
-python3-matplotlib lives) when started by another interpreter, and the repository root."""
+"""Shared parts of the benchmark scripts: run under Debian's /usr/bin/python3 (where
+python3-matplotlib lives) when started by another interpreter, the repository root, and
+the summary of a run from its monitors.csv and screen log."""
+import csv
 import os
+import re
 import sys
 
 
@@ -11,3 +14,41 @@ def repository_root():
         if os.path.exists("/usr/bin/python3") and os.path.realpath(sys.executable) != "/usr/bin/python3":
             os.execv("/usr/bin/python3", ["/usr/bin/python3"] + sys.argv)
     return os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+
+def summarize_run(folder, log, start_up):
+    """FI time mean after start_up and over 0.5 s windows, steps, rejected steps, wall
+    time, cost per simulated second, FGMRES iterations per step, bounds, mass drift;
+    returns (summary dict, (t, FI) series)."""
+    data = list(csv.DictReader(open(os.path.join(folder, "monitors.csv"))))
+    t = [float(r["time"]) for r in data]
+    dt = [float(r["time_step"]) for r in data]
+    fi = [float(r["fluidization_index"]) for r in data]
+    after = [i for i in range(len(t)) if t[i] > start_up]
+    weight = sum(dt[i] for i in after)
+    mean_fi = sum(fi[i] * dt[i] for i in after) / weight if weight > 0 else float("nan")
+    windows = []
+    w0 = start_up
+    while w0 < t[-1] - 1e-9:
+        idx = [i for i in after if w0 < t[i] <= w0 + 0.5]
+        if idx:
+            windows.append(sum(fi[i] * dt[i] for i in idx) / sum(dt[i] for i in idx))
+        w0 += 0.5
+    text = open(log).read() if os.path.exists(log) else ""
+    fin = re.search(r"Finished: (\d+) steps \((\d+) rejected\), wall ([\d.e+-]+) s, ([\d.e+-]+) s per simulated second", text)
+    steps, rejected, wall, per_second = (
+        (int(fin.group(1)), int(fin.group(2)), float(fin.group(3)), float(fin.group(4))) if fin
+        else (len(data) - 1, int(data[-1]["rejected_steps"]), float("nan"), float("nan")))
+    summary = {
+        "end": t[-1], "finished": bool(fin), "mean_fi": mean_fi,
+        "fi_min_window": min(windows) if windows else float("nan"),
+        "fi_max_window": max(windows) if windows else float("nan"),
+        "steps": steps, "rejected": rejected, "wall": wall, "per_second": per_second,
+        "krylov": sum(float(r["krylov_iterations"]) for r in data[1:]) / max(len(data) - 1, 1),
+        "alpha_min": min(float(r["alpha_s_min"]) for r in data),
+        "alpha_max": max(float(r["alpha_s_max"]) for r in data),
+        "theta_min": min(float(r["theta_min"]) for r in data),
+        "theta_max": max(float(r["theta_max"]) for r in data),
+        "drift": max(abs(float(r["solids_mass_drift"])) for r in data),
+    }
+    return summary, (t, fi)

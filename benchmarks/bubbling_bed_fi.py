@@ -11,13 +11,10 @@ usage: python3 benchmarks/bubbling_bed_fi.py [--end-time 5] [--start-up 1]
 core each; --summarize-only re-reads the monitors of an earlier run.
 """
 import argparse
-import csv
 import os
-import re
 import subprocess
-import sys
 
-from benchmark_setup import repository_root
+from benchmark_setup import repository_root, summarize_run
 
 root = repository_root()
 parser = argparse.ArgumentParser()
@@ -67,32 +64,8 @@ if not args.summarize_only:
 rows, series = [], {}
 for model in args.models:
     prm, folder, log = case(model)
-    data = list(csv.DictReader(open(os.path.join(folder, "monitors.csv"))))
-    t = [float(r["time"]) for r in data]
-    dt = [float(r["time_step"]) for r in data]
-    fi = [float(r["fluidization_index"]) for r in data]
-    after = [i for i in range(len(t)) if t[i] > args.start_up]
-    mean_fi = sum(fi[i] * dt[i] for i in after) / sum(dt[i] for i in after)
-    # window means (0.5 s) to show how much the slugging bed swings
-    windows = []
-    w0 = args.start_up
-    while w0 < t[-1] - 1e-9:
-        idx = [i for i in after if w0 < t[i] <= w0 + 0.5]
-        if idx:
-            windows.append(sum(fi[i] * dt[i] for i in idx) / sum(dt[i] for i in idx))
-        w0 += 0.5
-    text = open(log).read()
-    fin = re.search(r"Finished: (\d+) steps \((\d+) rejected\), wall ([\d.e+-]+) s, ([\d.e+-]+) s per simulated second", text)
-    steps, rejected, wall, per_second = (int(fin.group(1)), int(fin.group(2)), float(fin.group(3)), float(fin.group(4))) if fin else (len(data) - 1, int(data[-1]["rejected_steps"]), float("nan"), float("nan"))
-    rows.append({
-        "model": model, "end": t[-1], "mean_fi": mean_fi, "fi_min_window": min(windows), "fi_max_window": max(windows),
-        "steps": steps, "rejected": rejected, "wall": wall, "per_second": per_second,
-        "krylov": sum(float(r["krylov_iterations"]) for r in data[1:]) / max(len(data) - 1, 1),
-        "alpha_min": min(float(r["alpha_s_min"]) for r in data), "alpha_max": max(float(r["alpha_s_max"]) for r in data),
-        "theta_min": min(float(r["theta_min"]) for r in data), "theta_max": max(float(r["theta_max"]) for r in data),
-        "drift": max(abs(float(r["solids_mass_drift"])) for r in data),
-    })
-    series[model] = (t, fi)
+    summary, series[model] = summarize_run(folder, log, args.start_up)
+    rows.append(dict(summary, model=model))
 
 print(f"| model | simulated | FI mean (t > {args.start_up:g} s) | 0.5 s windows (min, max) | steps | rejected | alpha_s range | Theta range (m²/s²) | mass drift | FGMRES its/step | wall (s) | s per simulated s |")
 print("|---|---|---|---|---|---|---|---|---|---|---|---|")
