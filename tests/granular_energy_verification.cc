@@ -193,18 +193,18 @@ void wet (const std::string &source, const std::string &work)
   Case c;
   c.initial_temperature = 1e-2;
   c.end_time            = 2e-3;
-  c.extra = "subsection wet particles\n set liquid loading = 5e-3\n set liquid viscosity = "
-            "5e-3\nend\n";
+  c.extra =
+      "subsection wet particles\n set liquid loading = 5e-3\n set liquid viscosity = "
+      "5e-3\nend\n";
   std::vector<double> errors;
   for (const unsigned int steps : {250u, 500u, 1000u})
   {
-    c.time_step    = c.end_time / steps;
-    const Result r = run (c, source, work + "/wet_" + std::to_string (steps));
-    const auto   stress =
-        closures::create_solids_stress_model (r.parameters.solids_stress,
-                                              r.parameters.physical,
-                                              r.parameters.kinetic_theory,
-                                              r.parameters.wet);
+    c.time_step       = c.end_time / steps;
+    const Result r    = run (c, source, work + "/wet_" + std::to_string (steps));
+    const auto stress = closures::create_solids_stress_model (r.parameters.solids_stress,
+                                                              r.parameters.physical,
+                                                              r.parameters.kinetic_theory,
+                                                              r.parameters.wet);
     const closures::KineticTheory &theory = *stress->kinetic_theory ();
     const double capacity = 1.5 * alpha_s * r.parameters.physical.particle_density;
     // reference: RK4 on dTheta/dt = -K(e_wet(Theta)) Theta^(3/2) / capacity
@@ -235,7 +235,8 @@ void wet (const std::string &source, const std::string &work)
   std::cout << "wet cooling BDF2 observed order " << std::fixed << std::setprecision (3)
             << observed_order (errors) << std::endl;
   testing::check (errors.back () <= 1e-5,
-                  "wet cooling: rel. error " + std::to_string (errors.back ()) + " > 1e-5");
+                  "wet cooling: rel. error " + std::to_string (errors.back ()) +
+                      " > 1e-5");
   testing::check (observed_order (errors) >= 1.85, "wet cooling: order");
 }
 

@@ -52,7 +52,8 @@ struct ExactFields
 
   Number alpha_s (const Number *x) const
   {
-    return alpha_mean + 0.1 * x[0] - 0.05 * x[1] + (dim == 3 ? 0.04 * x[2] : Number (0.0));
+    return alpha_mean + 0.1 * x[0] - 0.05 * x[1] +
+           (dim == 3 ? 0.04 * x[2] : Number (0.0));
   }
   Number theta (const Number *x) const
   {
@@ -114,7 +115,8 @@ class ManufacturedKineticTheory : public ManufacturedSolution<dim>
 {
 public:
   explicit ManufacturedKineticTheory (const Parameters &p)
-      : alpha_mean (p.wet.enabled () ? 0.42 : 0.3), parameters (p), drag (closures::create_drag_model (p.drag_model)),
+      : alpha_mean (p.wet.enabled () ? 0.42 : 0.3), parameters (p),
+        drag (closures::create_drag_model (p.drag_model)),
         stress (closures::create_solids_stress_model (
             p.solids_stress, p.physical, p.kinetic_theory, p.wet)),
         theory (*stress->kinetic_theory ()), gas_particle{p.physical.gas_density,
@@ -435,8 +437,8 @@ int main (int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi (argc, argv, 1);
   const int                                dim    = std::stoi (argv[1]);
   const std::string                        source = argv[2], work = argv[3];
-  const bool wet = argc > 4 && std::string (argv[4]) == "wet";
-  const std::string                        mesh =
+  const bool        wet = argc > 4 && std::string (argv[4]) == "wet";
+  const std::string mesh =
       source + (dim == 2 ? "/tests/meshes/square.geo" : "/tests/meshes/cylinder.geo");
   const std::vector<unsigned int> levels =
       dim == 2 ? std::vector<unsigned int>{2, 3, 4} : std::vector<unsigned int>{0, 1, 2};
@@ -445,8 +447,8 @@ int main (int argc, char **argv)
   std::vector<double>                sizes;
   for (const unsigned int level : levels)
   {
-    const std::string folder = work + "/mms_kinetic_theory_" + std::to_string (dim) + "d_" +
-                               (wet ? "wet_" : "") + std::to_string (level);
+    const std::string folder = work + "/mms_kinetic_theory_" + std::to_string (dim) +
+                               "d_" + (wet ? "wet_" : "") + std::to_string (level);
     std::filesystem::create_directories (folder);
     const std::string prm_file = folder + "/case.prm";
     std::ofstream (prm_file) << case_text (dim, mesh, level, folder, wet);

@@ -286,8 +286,7 @@ bool TwoFluidSolver<dim>::update_granular_temperature (const BDFCoefficients &bd
     // Theta solves stopped at a true residual ~1e-4 relative (measured: Theta at 2e-4 s
     // moved by 8e-5 between scalar tolerances 1e-13 and 1e-16).
     SolverGMRES<TrilinosWrappers::MPI::Vector> gmres (
-        control,
-        SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData (30, true));
+        control, SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData (30, true));
     TrilinosWrappers::PreconditionAMG                 amg;
     TrilinosWrappers::PreconditionAMG::AdditionalData data;
     data.elliptic = false;
