@@ -16,6 +16,32 @@ def repository_root():
     return os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
+def read_case(name):
+    """A shipped case, prm/NAME.prm, with its mesh paths made absolute."""
+    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    return open(os.path.join(root, "prm", name + ".prm")).read().replace("../meshes/", root + "/meshes/")
+
+
+def write_case(work, name, base, end_time, sections="", field_interval=0.1, progress_interval=200):
+    """WORK/NAME.prm: BASE with SECTIONS appended, the end time and the output into
+    WORK/NAME (a later `set` wins in deal.II's ParameterHandler). Returns (prm, folder,
+    log path)."""
+    folder = os.path.join(work, name)
+    prm = os.path.join(work, name + ".prm")
+    with open(prm, "w") as f:
+        f.write(base + sections + f"""
+subsection time stepping
+  set end time = {end_time}
+end
+subsection output
+  set folder = {folder}
+  set field interval = {field_interval}
+  set progress interval = {progress_interval}
+end
+""")
+    return prm, folder, os.path.join(work, name + ".log")
+
+
 def summarize_run(folder, log, start_up):
     """FI time mean after start_up and over 0.5 s windows, steps, rejected steps, wall
     time, cost per simulated second, FGMRES iterations per step, bounds, mass drift;

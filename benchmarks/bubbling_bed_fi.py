@@ -14,7 +14,7 @@ import argparse
 import os
 import subprocess
 
-from benchmark_setup import repository_root, summarize_run
+from benchmark_setup import read_case, repository_root, summarize_run, write_case
 
 root = repository_root()
 parser = argparse.ArgumentParser()
@@ -27,26 +27,12 @@ parser.add_argument("--work", default=os.path.join(root, "build", "benchmarks", 
 args = parser.parse_args()
 os.makedirs(args.work, exist_ok=True)
 
-base = open(os.path.join(root, "prm", "bubbling_bed_2d.prm")).read().replace("../meshes/", root + "/meshes/")
+base = read_case("bubbling_bed_2d")
 
 
 def case(model):
-    folder = os.path.join(args.work, model)
-    prm = os.path.join(args.work, model + ".prm")
-    open(prm, "w").write(base + f"""
-subsection kinetic theory
-  set granular temperature = {model}
-end
-subsection time stepping
-  set end time = {args.end_time}
-end
-subsection output
-  set folder = {folder}
-  set field interval = 0.1
-  set progress interval = 200
-end
-""")
-    return prm, folder, os.path.join(args.work, model + ".log")
+    return write_case(args.work, model, base, args.end_time,
+                      f"\nsubsection kinetic theory\n  set granular temperature = {model}\nend\n")
 
 
 if not args.summarize_only:

@@ -13,9 +13,8 @@ import json
 import os
 import re
 import subprocess
-import sys
 
-from benchmark_setup import repository_root
+from benchmark_setup import read_case, repository_root, write_case
 
 root = repository_root()
 parser = argparse.ArgumentParser()
@@ -28,25 +27,13 @@ args = parser.parse_args()
 work = os.path.join(root, "build", "benchmarks", "cost_2d")
 os.makedirs(work, exist_ok=True)
 env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-base = open(os.path.join(root, "prm", "bubbling_bed_2d.prm")).read().replace("../meshes/", root + "/meshes/")
+base = read_case("bubbling_bed_2d")
 cache = os.path.join(work, "results.json")
 results = []
 for level in ([] if args.replot else args.levels):
-    folder = os.path.join(work, f"level_{level}")
-    prm = os.path.join(work, f"level_{level}.prm")
-    open(prm, "w").write(base + f"""
-subsection mesh
-  set initial refinement = {level}
-end
-subsection time stepping
-  set end time = {args.end_time}
-end
-subsection output
-  set folder = {folder}
-  set field interval = 0
-  set progress interval = 100000
-end
-""")
+    prm, folder, _ = write_case(work, f"level_{level}", base, args.end_time,
+                                f"\nsubsection mesh\n  set initial refinement = {level}\nend\n",
+                                field_interval=0, progress_interval=100000)
     out = subprocess.run(["mpirun", "--oversubscribe", "-np", str(args.ranks), os.path.join(root, "build", "wetbed"), prm],
                          capture_output=True, text=True, env=env).stdout
     cells = int(re.search(r"Mesh: (\d+) cells; flow DoFs (\d+) \(u_g, u_s\) \+ (\d+)", out).group(1))

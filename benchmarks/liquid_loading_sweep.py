@@ -16,7 +16,7 @@ import os
 import subprocess
 import time
 
-from benchmark_setup import repository_root, summarize_run
+from benchmark_setup import read_case, repository_root, summarize_run, write_case
 
 root = repository_root()
 parser = argparse.ArgumentParser()
@@ -29,27 +29,12 @@ parser.add_argument("--summarize-only", action="store_true")
 parser.add_argument("--work", default=os.path.join(root, "build", "benchmarks", "liquid_loading_sweep"))
 args = parser.parse_args()
 os.makedirs(args.work, exist_ok=True)
-base = open(os.path.join(root, "prm", "wet_column_2d.prm")).read().replace("../meshes/", root + "/meshes/")
+base = read_case("wet_column_2d")
 
 
 def case(loading):
-    name = f"delta_{loading:g}e-2"
-    folder = os.path.join(args.work, name)
-    prm = os.path.join(args.work, name + ".prm")
-    open(prm, "w").write(base + f"""
-subsection wet particles
-  set liquid loading = {loading * 1e-2:.6g}
-end
-subsection time stepping
-  set end time = {args.end_time}
-end
-subsection output
-  set folder = {folder}
-  set field interval = 0.1
-  set progress interval = 200
-end
-""")
-    return prm, folder, os.path.join(args.work, name + ".log")
+    return write_case(args.work, f"delta_{loading:g}e-2", base, args.end_time,
+                      f"\nsubsection wet particles\n  set liquid loading = {loading * 1e-2:.6g}\nend\n")
 
 
 if not args.summarize_only:

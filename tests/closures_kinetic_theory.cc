@@ -21,20 +21,7 @@
 using namespace wetbed;
 using namespace wetbed::closures;
 using testing::check_close;
-
-namespace
-{
-/** d f / d x by Sacado at x vs a central difference with step 1e-6 x. */
-void check_derivative (const std::function<ADNumber (const ADNumber &)> &f,
-                       const double                                      x,
-                       const std::string                                &what)
-{
-  const ADNumber ad = f (ADNumber (1, 0, x));
-  const double   h  = 1e-6 * x;
-  const double fd = (f (ADNumber (x + h)).val () - f (ADNumber (x - h)).val ()) / (2 * h);
-  check_close (ad.dx (0), fd, 1e-6, what + " (Sacado vs finite difference)");
-}
-} // namespace
+using testing::check_derivative;
 
 int main ()
 {

@@ -32,19 +32,10 @@ using namespace wetbed;
 using namespace wetbed::closures;
 using testing::check;
 using testing::check_close;
+using testing::check_derivative;
 
 namespace
 {
-void check_derivative (const std::function<ADNumber (const ADNumber &)> &f,
-                       const double                                      x,
-                       const std::string                                &what)
-{
-  const ADNumber ad = f (ADNumber (1, 0, x));
-  const double   h  = 1e-6 * x;
-  const double fd = (f (ADNumber (x + h)).val () - f (ADNumber (x - h)).val ()) / (2 * h);
-  check_close (ad.dx (0), fd, 1e-6, what + " (Sacado vs finite difference)");
-}
-
 /** Solids fraction at which the Woodcock gap equals h. */
 double fraction_at_gap (const double h, const double d)
 {

@@ -383,18 +383,6 @@ int main (int argc, char **argv)
       "|u_g|_L2", "|grad u_g|_L2", "|u_s|_L2", "|grad u_s|_L2", "|p'|_L2"};
   const std::array<double, 5> expected = {3, 2, 3, 2, 2};
   std::cout << "MMS " << dim << "D " << argv[2] << "\n";
-  for (unsigned int k = 0; k < 5; ++k)
-  {
-    std::cout << std::setw (14) << names[k];
-    for (unsigned int l = 0; l < errors.size (); ++l)
-      std::cout << "  " << std::scientific << std::setprecision (3) << errors[l][k];
-    const unsigned int n = errors.size () - 1;
-    const double       rate =
-        std::log (errors[n - 1][k] / errors[n][k]) / std::log (sizes[n - 1] / sizes[n]);
-    std::cout << "  rate " << std::fixed << std::setprecision (2) << rate << "\n";
-    testing::check (rate > expected[k] - 0.2,
-                    names[k] + " rate " + std::to_string (rate) + " < " +
-                        std::to_string (expected[k] - 0.2));
-  }
+  testing::report_rates (errors, sizes, names, expected);
   return testing::finish ("mms_convergence");
 }

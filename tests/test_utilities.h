@@ -1,8 +1,14 @@
 #pragma once
 
+#include <wetbed/closures/drag/drag_model.h>
+
+#include <array>
 #include <cmath>
+#include <functional>
+#include <iomanip>
 #include <iostream>
 #include <string>
+#include <vector>
 
 namespace wetbed::testing
 {
@@ -43,5 +49,41 @@ inline int finish (const std::string &name)
             << (failure_count () == 0 ? "all checks passed" : "checks failed")
             << std::endl;
   return failure_count () == 0 ? 0 : 1;
+}
+
+/** d f / d x by Sacado at x vs a central difference with step 1e-6 x (rel. 1e-6). */
+inline void
+check_derivative (const std::function<closures::ADNumber (const closures::ADNumber &)> &f,
+                  const double                                                          x,
+                  const std::string &what)
+{
+  using closures::ADNumber;
+  const ADNumber ad = f (ADNumber (1, 0, x));
+  const double   h  = 1e-6 * x;
+  const double fd = (f (ADNumber (x + h)).val () - f (ADNumber (x - h)).val ()) / (2 * h);
+  check_close (ad.dx (0), fd, 1e-6, what + " (Sacado vs finite difference)");
+}
+
+/** Prints the errors of each quantity over the meshes (sizes h) with the observed rate
+ * of the last two, and checks rate > expected - 0.2. */
+template <std::size_t n>
+void report_rates (const std::vector<std::array<double, n>> &errors,
+                   const std::vector<double>                &sizes,
+                   const std::array<std::string, n>         &names,
+                   const std::array<double, n>              &expected)
+{
+  const std::size_t last = errors.size () - 1;
+  for (std::size_t k = 0; k < n; ++k)
+  {
+    std::cout << std::setw (16) << names[k];
+    for (const auto &e : errors)
+      std::cout << "  " << std::scientific << std::setprecision (3) << e[k];
+    const double rate = std::log (errors[last - 1][k] / errors[last][k]) /
+                        std::log (sizes[last - 1] / sizes[last]);
+    std::cout << "  rate " << std::fixed << std::setprecision (2) << rate << "\n";
+    check (rate > expected[k] - 0.2,
+           names[k] + " rate " + std::to_string (rate) + " < " +
+               std::to_string (expected[k] - 0.2));
+  }
 }
 } // namespace wetbed::testing

@@ -6,6 +6,24 @@
 
 namespace wetbed
 {
+/** Gradient of an analytic field by central differences (step 1e-6: error ~1e-10, far
+ * below the discretisation errors the manufactured solutions measure). */
+template <int dim, typename Field>
+dealii::Tensor<1, dim> central_difference_gradient (const Field              &f,
+                                                    const dealii::Point<dim> &x)
+{
+  const double           h = 1e-6;
+  dealii::Tensor<1, dim> g;
+  for (unsigned int d = 0; d < dim; ++d)
+  {
+    dealii::Point<dim> plus = x, minus = x;
+    plus[d] += h;
+    minus[d] -= h;
+    g[d] = (f (plus) - f (minus)) / (2 * h);
+  }
+  return g;
+}
+
 /**
  * Source terms a verification run adds to the equations, and the exact fields it
  * imposes on the boundary and compares against. The solver calls these only when a
@@ -87,16 +105,8 @@ public:
   dealii::Tensor<1, dim> gradient (const dealii::Point<dim> &x,
                                    const unsigned int = 0) const override
   {
-    const double           h = 1e-6;
-    dealii::Tensor<1, dim> g;
-    for (unsigned int d = 0; d < dim; ++d)
-    {
-      dealii::Point<dim> plus = x, minus = x;
-      plus[d] += h;
-      minus[d] -= h;
-      g[d] = (value (plus) - value (minus)) / (2 * h);
-    }
-    return g;
+    return central_difference_gradient<dim> (
+        [this] (const dealii::Point<dim> &y) { return value (y); }, x);
   }
 
 private:
@@ -130,16 +140,8 @@ public:
   dealii::Tensor<1, dim> gradient (const dealii::Point<dim> &x,
                                    const unsigned int        c) const override
   {
-    const double           h = 1e-6;
-    dealii::Tensor<1, dim> g;
-    for (unsigned int d = 0; d < dim; ++d)
-    {
-      dealii::Point<dim> plus = x, minus = x;
-      plus[d] += h;
-      minus[d] -= h;
-      g[d] = (value (plus, c) - value (minus, c)) / (2 * h);
-    }
-    return g;
+    return central_difference_gradient<dim> (
+        [this, c] (const dealii::Point<dim> &y) { return value (y, c); }, x);
   }
 
 private:
