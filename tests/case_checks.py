@@ -2,7 +2,7 @@
 """Runs a .prm case with wetbed and checks its monitors.csv against physics.
 
 usage: case_checks.py CHECK WETBED SOURCE_DIR WORK_DIR
-CHECK: ergun | hydrostatic | packed | settling | ramp | kinetic | ranks | bubbling
+CHECK: ergun | hydrostatic | packed | settling | ramp | kinetic | ranks | bubbling | hdf5
 """
 import csv
 import math
@@ -184,6 +184,54 @@ elif check == "bubbling":
     bounds_and_mass(rows, 0.61, 1e-10)
     expect(rows[-1]["time"] >= 0.05 - 1e-12, "reached t = 0.05 s")
     expect(max(r["fluidization_index"] for r in rows[1:]) > 1.0, "the gas carries the bed (FI > 1 at start-up)")
+elif check == "hdf5":
+    # parallel HDF5 + XDMF output on 2 ranks: the XDMF index and the datasets agree
+    try:
+        import h5py
+    except ImportError:  # Debian's python3-h5py lives under /usr/bin/python3
+        if os.path.realpath(sys.executable) != "/usr/bin/python3":
+            os.execv("/usr/bin/python3", ["/usr/bin/python3"] + sys.argv)
+        raise
+    import xml.etree.ElementTree as ElementTree
+    folder = os.path.join(work, "hdf5")
+    rows = run("bubbling_bed_2d", "subsection time stepping\n set end time = 3e-3\n set initial time step = 1e-3\nend\n"
+               "subsection output\n set field interval = 1e-3\n set field format = vtu and hdf5\nend\n", ranks=2, folder=folder)
+    xdmf = ElementTree.parse(os.path.join(folder, "fields.xdmf")).getroot()
+    grids = xdmf.findall(".//Grid[@GridType='Uniform']")
+    times = [float(g.find("Time").get("Value")) for g in grids]
+    expect(len(grids) == 4 and times == sorted(times) and abs(times[-1] - rows[-1]["time"]) < 1e-12,
+           f"fields.xdmf lists 4 outputs at increasing times {times}")
+    wanted = {"alpha_s", "alpha_g", "gas_velocity", "solids_velocity", "pressure", "granular_temperature",
+              "solids_pressure", "solids_shear_viscosity", "drag_coefficient", "refinement_level", "rank"}
+    consistent = True
+    for g in grids:
+        n_nodes = int(g.find("Geometry/DataItem").get("Dimensions").split()[0])
+        n_cells = int(g.find("Topology").get("NumberOfElements"))
+        names = set()
+        for item in g.iter("DataItem"):
+            file, dataset = item.text.strip().split(":")
+            dataset = dataset.lstrip("/")
+            dims = tuple(int(v) for v in item.get("Dimensions").split())
+            with h5py.File(os.path.join(folder, file), "r") as h5:
+                shape = h5[dataset].shape
+                data = h5[dataset][()]
+            if shape[0] != dims[0] or (len(dims) > 1 and len(shape) > 1 and shape[1] != dims[1]):
+                consistent = False
+                print(f"  {file}:{dataset} has shape {shape}, the XDMF says {dims}")
+            if dataset == "cells" and (shape[0] != n_cells or data.max() >= n_nodes):
+                consistent = False
+            if dataset == "alpha_s" and not (data.min() >= -1e-12 and data.max() <= 0.61 + 1e-12):
+                consistent = False
+                print(f"  alpha_s out of [0, 0.61] in {file}")
+        for attribute in g.findall("Attribute"):
+            names.add(attribute.get("Name"))
+        consistent &= wanted <= names
+    expect(consistent, "every XDMF DataItem names an HDF5 dataset of its declared shape; cells index the nodes; "
+                       "alpha_s within [0, 0.61]; all fields present")
+    ranks = set()
+    with h5py.File(os.path.join(folder, grids[-1].find("Geometry/DataItem").text.strip().split(":")[0]), "r") as h5:
+        ranks = set(h5["rank"][()].ravel().tolist())
+    expect(ranks == {0.0, 1.0}, f"both ranks wrote into the one file (rank field {sorted(ranks)})")
 else:
     sys.exit(f"unknown check {check}")
 

@@ -474,16 +474,25 @@ void OutputParameters::declare_parameters (ParameterHandler &prm)
       "monitor interval", "1", Integer (1), "Steps between monitors.csv rows.");
   prm.declare_entry (
       "progress interval", "20", Integer (1), "Steps between progress lines.");
+  prm.declare_entry ("field format",
+                     "vtu",
+                     Selection ("vtu|hdf5|vtu and hdf5"),
+                     "vtu: fields_NNN.pvtu with one .vtu piece per rank; hdf5: one "
+                     "fields_NNN.h5 per output (parallel HDF5) indexed by fields.xdmf "
+                     "(open it in ParaView or VisIt); or both.");
   prm.leave_subsection ();
 }
 
 void OutputParameters::parse_parameters (ParameterHandler &prm)
 {
   prm.enter_subsection ("output");
-  folder            = prm.get ("folder");
-  field_interval    = prm.get_double ("field interval");
-  monitor_interval  = prm.get_integer ("monitor interval");
-  progress_interval = prm.get_integer ("progress interval");
+  folder                   = prm.get ("folder");
+  field_interval           = prm.get_double ("field interval");
+  monitor_interval         = prm.get_integer ("monitor interval");
+  progress_interval        = prm.get_integer ("progress interval");
+  const std::string format = prm.get ("field format");
+  vtu                      = format != "hdf5";
+  hdf5                     = format != "vtu";
   prm.leave_subsection ();
   require (!folder.empty (), "output/folder", "is empty");
 }

@@ -11,8 +11,11 @@ using namespace dealii;
 
 /**
  * Writes u_g, u_s, p', alpha_s, alpha_g, the solids pressure P_s(alpha_s) (nodal, on the
- * alpha_s space, as the compaction force uses it) and the drag coefficient beta (cell
- * mean over the Gauss points, with the local slip) as VTU pieces with a PVTU record.
+ * alpha_s space, as the compaction force uses it), Theta (kinetic theory), the drag
+ * coefficient beta and the solids shear viscosity mu_s (cell means over the Gauss points,
+ * with the local slip, Theta and strain rate), the refinement level and the MPI rank;
+ * as VTU pieces with a PVTU record and/or as one parallel HDF5 file per output indexed
+ * by fields.xdmf (`output/field format`).
  */
 template <int dim>
 void TwoFluidSolver<dim>::write_fields () const
@@ -45,15 +48,18 @@ void TwoFluidSolver<dim>::write_fields () const
   if (kinetic_theory)
     data_out.add_data_vector (alpha_dof_handler, theta, "granular_temperature");
 
-  Vector<float>     drag_coefficient (triangulation.n_active_cells ());
+  Vector<float> drag_coefficient (triangulation.n_active_cells ()),
+      shear_viscosity (triangulation.n_active_cells ()),
+      level (triangulation.n_active_cells ());
   const QGauss<dim> quadrature (2);
   FEValues<dim>     flow_values (
-      mapping, flow_fe, quadrature, update_values | update_JxW_values);
+      mapping, flow_fe, quadrature, update_values | update_gradients | update_JxW_values);
   FEValues<dim> alpha_values (mapping, alpha_fe, quadrature, update_values);
   const FEValuesExtractors::Vector gas (0), solids (dim);
   std::vector<Tensor<1, dim>>      u_g (quadrature.size ()), u_s (quadrature.size ());
-  std::vector<double>              alpha_q (quadrature.size ());
-  auto                             alpha_cell = alpha_dof_handler.begin_active ();
+  std::vector<Tensor<2, dim>>      grad_u_s (quadrature.size ());
+  std::vector<double> alpha_q (quadrature.size ()), theta_q (quadrature.size ());
+  auto                alpha_cell = alpha_dof_handler.begin_active ();
   for (const auto &cell : flow_dof_handler.active_cell_iterators ())
   {
     if (cell->is_locally_owned ())
@@ -62,26 +68,58 @@ void TwoFluidSolver<dim>::write_fields () const
       alpha_values.reinit (alpha_cell);
       flow_values[gas].get_function_values (flow_solution, u_g);
       flow_values[solids].get_function_values (flow_solution, u_s);
+      flow_values[solids].get_function_gradients (flow_solution, grad_u_s);
       alpha_values.get_function_values (alpha, alpha_q);
-      double integral = 0, volume = 0;
+      alpha_values.get_function_values (theta, theta_q);
+      double integral = 0, viscosity = 0, volume = 0;
       for (unsigned int q = 0; q < quadrature.size (); ++q)
       {
+        const SymmetricTensor<2, dim> deviator =
+            deviator_tensor<dim> () * symmetrize (grad_u_s[q]);
         integral +=
             drag->coefficient (alpha_q[q], (u_g[q] - u_s[q]).norm (), gas_particle) *
             flow_values.JxW (q);
+        viscosity += solids_stress
+                         ->evaluate ({std::max (alpha_q[q], 0.0),
+                                      theta_q[q],
+                                      std::sqrt (2.0 * deviator * deviator)})
+                         .shear_viscosity *
+                     flow_values.JxW (q);
         volume += flow_values.JxW (q);
       }
       drag_coefficient (cell->active_cell_index ()) = integral / volume;
+      shear_viscosity (cell->active_cell_index ())  = viscosity / volume;
+      level (cell->active_cell_index ())            = cell->level ();
     }
     ++alpha_cell;
   }
   data_out.add_data_vector (drag_coefficient, "drag_coefficient");
+  data_out.add_data_vector (shear_viscosity, "solids_shear_viscosity");
+  data_out.add_data_vector (level, "refinement_level");
   Vector<float> subdomain (triangulation.n_active_cells ());
   subdomain = triangulation.locally_owned_subdomain ();
   data_out.add_data_vector (subdomain, "rank");
   data_out.build_patches (mapping, 2, DataOut<dim>::curved_inner_cells);
-  data_out.write_vtu_with_pvtu_record (
-      parameters.output.folder + "/", "fields", output_index, communicator, 5);
+  if (parameters.output.vtu)
+    data_out.write_vtu_with_pvtu_record (
+        parameters.output.folder + "/", "fields", output_index, communicator, 5);
+  if (parameters.output.hdf5)
+  {
+    // one file per output, written collectively; the XDMF index is rewritten each time
+    // (on rank 0) so that it always lists the complete outputs only. Vertices are not
+    // merged between patches: the cell fields (beta, mu_s, level, rank) stay piecewise
+    // constant instead of being averaged at shared vertices.
+    const std::string name =
+        "fields_" + Utilities::int_to_string (output_index, 5) + ".h5";
+    DataOutBase::DataOutFilter filter (DataOutBase::DataOutFilterFlags (false, true));
+    data_out.write_filtered_data (filter);
+    data_out.write_hdf5_parallel (
+        filter, parameters.output.folder + "/" + name, communicator);
+    xdmf_entries.push_back (
+        data_out.create_xdmf_entry (filter, name, time, communicator));
+    data_out.write_xdmf_file (
+        xdmf_entries, parameters.output.folder + "/fields.xdmf", communicator);
+  }
   const_cast<TwoFluidSolver<dim> *> (this)->output_index++;
   const_cast<TwoFluidSolver<dim> *> (this)->next_output_time +=
       parameters.output.field_interval;

@@ -123,6 +123,7 @@ struct OutputParameters
   std::string  folder;
   double       field_interval; // simulated seconds between VTU outputs (0: none)
   unsigned int monitor_interval, progress_interval;
+  bool         vtu, hdf5; // field formats: pvtu/vtu pieces, parallel HDF5 + XDMF
 
   static void declare_parameters (dealii::ParameterHandler &prm);
   void        parse_parameters (dealii::ParameterHandler &prm);

@@ -12,6 +12,7 @@
 #include <wetbed/solvers/block_preconditioner.h>
 
 #include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/data_out_base.h>
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/distributed/tria.h>
@@ -170,8 +171,10 @@ private:
   unsigned int step_number, rejected_steps, last_krylov_iterations;
   double       next_output_time;
   unsigned int output_index;
-  double       initial_solids_mass;
-  double       min_node_spacing;
+  // the XDMF index of the HDF5 outputs written so far (rewritten at each output)
+  mutable std::vector<dealii::XDMFEntry> xdmf_entries;
+  double                                 initial_solids_mass;
+  double                                 min_node_spacing;
   // velocity AMG reuse: solves since the last build, iterations right after it
   unsigned int solves_since_build     = std::numeric_limits<unsigned int>::max () / 2;
   unsigned int iterations_after_build = 0;
