@@ -76,5 +76,25 @@ def summarize_run(folder, log, start_up):
         "theta_min": min(float(r["theta_min"]) for r in data),
         "theta_max": max(float(r["theta_max"]) for r in data),
         "drift": max(abs(float(r["solids_mass_drift"])) for r in data),
+        "frequency": float("nan"),
     }
+    probe = [k for k in data[0] if k.startswith("alpha_s_plane_")]
+    if probe:
+        summary["frequency"] = dominant_frequency(t, [float(r[probe[-1]]) for r in data], start_up)
     return summary, (t, fi)
+
+
+def dominant_frequency(t, signal, start_up):
+    """The frequency (Hz) of the largest peak of the amplitude spectrum of SIGNAL(t) after
+    START_UP (resampled uniformly at the mean step, mean removed); nan if too short."""
+    import numpy
+    t = numpy.asarray(t)
+    signal = numpy.asarray(signal)
+    keep = t > start_up
+    if keep.sum() < 16:
+        return float("nan")
+    times = numpy.linspace(t[keep][0], t[keep][-1], keep.sum())
+    values = numpy.interp(times, t[keep], signal[keep])
+    spectrum = numpy.abs(numpy.fft.rfft(values - values.mean()))
+    frequencies = numpy.fft.rfftfreq(len(values), times[1] - times[0])
+    return float(frequencies[1 + numpy.argmax(spectrum[1:])])

@@ -18,6 +18,7 @@ using dealii::Patterns::Bool;
 using dealii::Patterns::Double;
 using dealii::Patterns::FileName;
 using dealii::Patterns::Integer;
+using dealii::Patterns::List;
 using dealii::Patterns::Selection;
 
 namespace
@@ -474,6 +475,14 @@ void OutputParameters::declare_parameters (ParameterHandler &prm)
       "monitor interval", "1", Integer (1), "Steps between monitors.csv rows.");
   prm.declare_entry (
       "progress interval", "20", Integer (1), "Steps between progress lines.");
+  prm.declare_entry (
+      "probe heights",
+      "",
+      List (Double (0)),
+      "Heights above the inlet (m) at which monitors.csv records the "
+      "cross-section average of alpha_s over the cell layer containing the "
+      "height (columns alpha_s_plane_<height>; seed 000 probes 0.076 m); "
+      "empty: none.");
   prm.declare_entry ("field format",
                      "vtu",
                      Selection ("vtu|hdf5|vtu and hdf5"),
@@ -486,10 +495,14 @@ void OutputParameters::declare_parameters (ParameterHandler &prm)
 void OutputParameters::parse_parameters (ParameterHandler &prm)
 {
   prm.enter_subsection ("output");
-  folder                   = prm.get ("folder");
-  field_interval           = prm.get_double ("field interval");
-  monitor_interval         = prm.get_integer ("monitor interval");
-  progress_interval        = prm.get_integer ("progress interval");
+  folder            = prm.get ("folder");
+  field_interval    = prm.get_double ("field interval");
+  monitor_interval  = prm.get_integer ("monitor interval");
+  progress_interval = prm.get_integer ("progress interval");
+  probe_heights.clear ();
+  for (const auto &item :
+       dealii::Utilities::split_string_list (prm.get ("probe heights")))
+    probe_heights.push_back (dealii::Utilities::string_to_double (item));
   const std::string format = prm.get ("field format");
   vtu                      = format != "hdf5";
   hdf5                     = format != "vtu";

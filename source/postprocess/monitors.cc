@@ -4,7 +4,9 @@
 
 namespace wetbed
 {
-void Monitors::open (const std::string &filename, const bool write)
+void Monitors::open (const std::string         &filename,
+                     const bool                 write,
+                     const std::vector<double> &probe_heights)
 {
   if (!write)
     return;
@@ -14,7 +16,10 @@ void Monitors::open (const std::string &filename, const bool write)
           "fluidization_index,solids_mass,solids_mass_drift,alpha_s_min,alpha_s_max,"
           "gas_speed_max,solids_speed_max,bed_height,theta_min,theta_mean,theta_max,"
           "granular_production,granular_dissipation,granular_drag_exchange,"
-          "granular_wall_flux\n";
+          "granular_wall_flux";
+  for (const double h : probe_heights)
+    file << ",alpha_s_plane_" << h;
+  file << '\n';
 }
 
 void Monitors::add (const MonitorRow &r)
@@ -30,7 +35,10 @@ void Monitors::add (const MonitorRow &r)
        << r.solids_speed_max << ',' << r.bed_height << ',' << r.theta_min << ','
        << r.theta_mean << ',' << r.theta_max << ',' << r.granular_energy.production << ','
        << r.granular_energy.dissipation << ',' << r.granular_energy.drag_exchange << ','
-       << r.granular_energy.wall_flux << '\n';
+       << r.granular_energy.wall_flux;
+  for (const double a : r.plane_alpha)
+    file << ',' << a;
+  file << '\n';
   file.flush ();
 }
 } // namespace wetbed

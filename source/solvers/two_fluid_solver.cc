@@ -103,7 +103,8 @@ void TwoFluidSolver<dim>::initialize ()
   setup_dofs ();
   set_initial_state ();
   monitors.open (folder + "/monitors.csv",
-                 Utilities::MPI::this_mpi_process (communicator) == 0);
+                 Utilities::MPI::this_mpi_process (communicator) == 0,
+                 parameters.output.probe_heights);
   initialized = true;
 }
 

@@ -120,10 +120,11 @@ struct LinearSolverParameters
 /** `subsection output`. */
 struct OutputParameters
 {
-  std::string  folder;
-  double       field_interval; // simulated seconds between VTU outputs (0: none)
-  unsigned int monitor_interval, progress_interval;
-  bool         vtu, hdf5; // field formats: pvtu/vtu pieces, parallel HDF5 + XDMF
+  std::string         folder;
+  double              field_interval; // simulated seconds between VTU outputs (0: none)
+  unsigned int        monitor_interval, progress_interval;
+  bool                vtu, hdf5; // field formats: pvtu/vtu pieces, parallel HDF5 + XDMF
+  std::vector<double> probe_heights; // cross-section averages of alpha_s (m above inlet)
 
   static void declare_parameters (dealii::ParameterHandler &prm);
   void        parse_parameters (dealii::ParameterHandler &prm);

@@ -36,13 +36,17 @@ struct MonitorRow
   double theta_min = 0, theta_mean = 0, theta_max = 0; // Theta (mean: solids-weighted)
   double granular_sound_speed = 0; // max sqrt(2 P_kin/(alpha_s rho_s)) (m/s)
   GranularEnergyBudget granular_energy;
+  std::vector<double>  plane_alpha; // alpha_s averaged over the probe cell layers
 };
 
 /** Collects MonitorRows and writes them (rank 0) to a CSV file. */
 class Monitors
 {
 public:
-  void                           open (const std::string &filename, bool write);
+  /** probe_heights name the alpha_s_plane_<height> columns. */
+  void                           open (const std::string         &filename,
+                                       bool                       write,
+                                       const std::vector<double> &probe_heights = {});
   void                           add (const MonitorRow &row);
   const MonitorRow              &last () const { return rows.back (); }
   const std::vector<MonitorRow> &all () const { return rows; }
