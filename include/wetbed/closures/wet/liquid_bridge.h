@@ -1,5 +1,7 @@
 #pragma once
 
+#include <wetbed/closures/frictional/schaeffer_viscosity.h>
+
 #include <cmath>
 
 namespace wetbed::closures
@@ -119,10 +121,11 @@ Number wet_viscosity (const Number &wet_pressure,
                       const double  regularisation,
                       const double  maximum_viscosity)
 {
-  using std::sin;
-  using std::sqrt;
-  const Number mu = std::sqrt (2.0) * wet_pressure * sin (stability_angle) /
-                    (2.0 * sqrt (second_invariant + regularisation * regularisation));
-  return mu < maximum_viscosity ? mu : Number (maximum_viscosity);
+  // sqrt(2) times the Schaeffer form with the wet pressure (same denominator and cap)
+  return std::sqrt (2.0) * schaeffer_viscosity (wet_pressure,
+                                                second_invariant,
+                                                stability_angle,
+                                                regularisation,
+                                                maximum_viscosity / std::sqrt (2.0));
 }
 } // namespace wetbed::closures
