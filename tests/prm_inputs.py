@@ -6,6 +6,7 @@ usage: prm_inputs.py WETBED_EXECUTABLE SOURCE_DIR WORK_DIR
 """
 import hashlib
 import os
+import shutil
 import subprocess
 import sys
 
@@ -100,20 +101,40 @@ cases = [
     ("negative liquid viscosity", "subsection wet particles\n set liquid viscosity = -0.5\nend", "wet particles/liquid viscosity"),
     ("unknown rupture distance", "subsection wet particles\n set rupture distance = Newton\nend", "rupture distance"),
     ("angle of stability 90", "subsection wet particles\n set angle of stability = 90\nend", "wet particles/angle of stability"),
+    ("negative checkpoint interval", "subsection checkpoint\n set interval = -5\nend", "interval"),
+    ("resume without a checkpoint", f"subsection checkpoint\n set resume = true\nend\nsubsection output\n set folder = {os.path.join(work, 'never_run')}\nend", "checkpoint/resume"),
+    ("resume from a damaged checkpoint", "damaged checkpoint", "checkpoint/resume"),
+    ("resume from a garbage checkpoint state", "garbage checkpoint", "checkpoint/resume"),
     ("unwritable output folder", "subsection output\n set folder = /proc/wetbed-output\nend", "output/folder"),
 ]
 corrupt = os.path.join(work, "corrupt.msh")
 with open(corrupt, "w") as f:
     f.write("$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$PhysicalNames\n3\n1 1 \"inlet\"\n1 2 \"outlet\"\n1 3 \"wall\"\n$EndPhysicalNames\n$Nodes\ngarbage\n")
+# copies of the base run's folder (it wrote a checkpoint at its end) with one file spoilt
+damaged = {}
+for kind, spoil in (("damaged checkpoint", "triangulation_fixed.data"), ("garbage checkpoint", "state")):
+    folder = os.path.join(work, kind.replace(" ", "_"))
+    shutil.rmtree(folder, ignore_errors=True)
+    shutil.copytree(results, folder)
+    with open(os.path.join(folder, "checkpoint", spoil), "r+b") as f:
+        f.seek(40)
+        f.write(b"garbage")
+    damaged[kind] = (f"subsection checkpoint\n set resume = true\nend\nsubsection output\n set folder = {folder}\nend",
+                     os.path.join(folder, "monitors.csv"), hashlib.sha256(open(os.path.join(folder, "monitors.csv"), "rb").read()).hexdigest())
 for description, lines, expected in cases:
     if lines is None:
         lines = f"subsection mesh\n set file = {corrupt}\nend"
+    spoilt = damaged.get(lines)
+    if spoilt:
+        lines = spoilt[0]
     code, out, err = run(override(base, lines), "bad")
     message = err.strip().splitlines()[-1] if err.strip() else ""
     if code != 2 or expected not in message:
         failures.append(f"bad input '{description}': exit {code}, message '{message[:300]}'")
     else:
         print(f"ok   {description}: {message[:140]}")
+    if spoilt and hashlib.sha256(open(spoilt[1], "rb").read()).hexdigest() != spoilt[2]:
+        failures.append(f"bad input '{description}': the run's monitors.csv was changed")
 if digest and hashlib.sha256(open(monitors, "rb").read()).hexdigest() != digest:
     failures.append("an existing monitors.csv was changed by a bad-input run")
 

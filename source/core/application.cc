@@ -19,6 +19,7 @@ void print_usage (std::ostream &out)
   out << "wetbed: two-fluid (Euler-Euler) simulation of gas-solid fluidized beds\n\n"
          "usage:\n"
          "  wetbed CASE.prm                run the case (mpirun -np N wetbed CASE.prm)\n"
+         "  wetbed CASE.prm --resume       continue it from <output folder>/checkpoint\n"
          "  wetbed --print-parameters      every parameter with default and "
          "documentation\n"
          "  wetbed closures CASE.prm [--alpha-s A,..] [--theta T,..] [--shear-rate "
@@ -29,18 +30,22 @@ void print_usage (std::ostream &out)
          "theta shear_rate)\n"
          "  wetbed --help                  this text\n\n"
          "Results go to `output/folder` of the case: parameters.prm, monitors.csv,\n"
-         "fields_*.pvtu. Exit status: 0 done, 1 usage, 2 bad input, 3 run failed.\n";
+         "fields_*.pvtu. Exit status: 0 done, 1 usage, 2 bad input, 3 run failed,\n"
+         "4 stopped by SIGTERM/SIGINT after writing a checkpoint.\n";
 }
 
+/** Runs the case; returns the exit status (0 finished, 4 stopped by a signal). */
 template <int dim>
-void run_case (const Parameters &parameters, const dealii::ParameterHandler &prm)
+int run_case (const Parameters &parameters, const dealii::ParameterHandler &prm)
 {
   TwoFluidSolver<dim> solver (parameters, MPI_COMM_WORLD);
   solver.initialize ();
   if (dealii::Utilities::MPI::this_mpi_process (MPI_COMM_WORLD) == 0)
-    prm.print_parameters (parameters.output.folder + "/parameters.prm",
+    prm.print_parameters (parameters.output.folder + (parameters.checkpoint.resume
+                                                          ? "/parameters_resumed.prm"
+                                                          : "/parameters.prm"),
                           dealii::ParameterHandler::PRM);
-  solver.run ();
+  return solver.run () == TwoFluidSolver<dim>::RunEnd::finished ? 0 : 4;
 }
 } // namespace
 
@@ -66,7 +71,8 @@ int run_application (int argc, char **argv)
       return 2;
     }
   }
-  if (argc != 2)
+  const bool resume = argc == 3 && std::string (argv[2]) == "--resume";
+  if (argc != 2 && !resume)
   {
     if (root)
       print_usage (std::cerr);
@@ -90,11 +96,11 @@ int run_application (int argc, char **argv)
   try
   {
     dealii::ParameterHandler prm;
-    const Parameters         parameters = Parameters::read (argument, prm);
-    if (parameters.dimension == 2)
-      run_case<2> (parameters, prm);
-    else
-      run_case<3> (parameters, prm);
+    Parameters               parameters = Parameters::read (argument, prm);
+    if (resume)
+      parameters.checkpoint.resume = true;
+    return parameters.dimension == 2 ? run_case<2> (parameters, prm)
+                                     : run_case<3> (parameters, prm);
   }
   catch (const InputError &e)
   {

@@ -537,6 +537,7 @@ void Parameters::declare_parameters (ParameterHandler &prm)
   TimeSteppingParameters::declare_parameters (prm);
   LinearSolverParameters::declare_parameters (prm);
   OutputParameters::declare_parameters (prm);
+  CheckpointParameters::declare_parameters (prm);
 }
 
 void Parameters::parse_parameters (ParameterHandler &prm)
@@ -564,6 +565,7 @@ void Parameters::parse_parameters (ParameterHandler &prm)
   time.parse_parameters (prm);
   linear_solver.parse_parameters (prm);
   output.parse_parameters (prm);
+  checkpoint.parse_parameters (prm);
 }
 
 unsigned int Parameters::read_dimension (const std::string &filename)

@@ -1,6 +1,8 @@
 #include <wetbed/postprocess/monitors.h>
 
+#include <filesystem>
 #include <iomanip>
+#include <stdexcept>
 
 namespace wetbed
 {
@@ -20,6 +22,26 @@ void Monitors::open (const std::string         &filename,
   for (const double h : probe_heights)
     file << ",alpha_s_plane_" << h;
   file << '\n';
+}
+
+void Monitors::reopen (const std::string       &filename,
+                       const bool               write,
+                       const unsigned long long bytes)
+{
+  if (!write)
+    return;
+  std::error_code error;
+  const auto      size = std::filesystem::file_size (filename, error);
+  if (error || size < bytes)
+    throw std::runtime_error ("checkpoint/resume: " + filename +
+                              " is shorter than when the checkpoint was written");
+  std::filesystem::resize_file (filename, bytes);
+  file.open (filename, std::ios::app);
+}
+
+unsigned long long Monitors::bytes_written ()
+{
+  return file.is_open () ? static_cast<unsigned long long> (file.tellp ()) : 0;
 }
 
 void Monitors::add (const MonitorRow &r)

@@ -1,4 +1,5 @@
 #include <wetbed/core/input_error.h>
+#include <wetbed/core/stop_signal.h>
 #include <wetbed/solvers/two_fluid_solver.h>
 
 #include <sstream>
@@ -95,16 +96,23 @@ void TwoFluidSolver<dim>::initialize ()
     std::filesystem::remove (probe);
   }
   MPI_Barrier (communicator);
-  boundary_ids = read_mesh<dim> (parameters.mesh,
-                                 parameters.parameter_file_directory,
-                                 folder,
-                                 parameters.physical.gravity,
-                                 triangulation);
-  setup_dofs ();
-  set_initial_state ();
-  monitors.open (folder + "/monitors.csv",
-                 Utilities::MPI::this_mpi_process (communicator) == 0,
-                 parameters.output.probe_heights);
+  if (parameters.checkpoint.resume)
+    resume_from_checkpoint ();
+  else
+  {
+    boundary_ids = read_mesh<dim> (parameters.mesh,
+                                   parameters.parameter_file_directory,
+                                   folder,
+                                   parameters.physical.gravity,
+                                   triangulation);
+    setup_dofs ();
+    set_initial_state ();
+    monitors.open (folder + "/monitors.csv",
+                   Utilities::MPI::this_mpi_process (communicator) == 0,
+                   parameters.output.probe_heights);
+  }
+  if (parameters.checkpoint.on_signal)
+    catch_stop_signals ();
   initialized = true;
 }
 
@@ -553,22 +561,36 @@ void TwoFluidSolver<dim>::advance ()
 }
 
 template <int dim>
-void TwoFluidSolver<dim>::run ()
+typename TwoFluidSolver<dim>::RunEnd TwoFluidSolver<dim>::run ()
 {
   if (!initialized)
     initialize ();
   const auto &ts    = parameters.time;
   const auto  start = std::chrono::steady_clock::now ();
+  if (!resumed)
   {
-    TimerOutput::Scope scope (timer, "monitors");
-    MonitorRow         row = evaluate_monitors ();
-    monitors.add (row);
+    {
+      TimerOutput::Scope scope (timer, "monitors");
+      MonitorRow         row = evaluate_monitors ();
+      monitors.add (row);
+    }
+    if (parameters.output.field_interval >= 0)
+      write_fields ();
   }
-  if (parameters.output.field_interval >= 0)
-    write_fields ();
+  const auto &checkpoint = parameters.checkpoint;
   while (time < ts.end_time * (1 - 1e-12))
   {
     advance ();
+    if (checkpoint.interval > 0 && step_number % checkpoint.interval == 0)
+      write_checkpoint ();
+    if (checkpoint.on_signal && stop_requested (communicator))
+    {
+      pcout << "Stop requested by a signal at t = " << time << " (step " << step_number
+            << ")" << std::endl;
+      if (checkpoint.interval == 0 || step_number % checkpoint.interval != 0)
+        write_checkpoint ();
+      return RunEnd::stopped_by_signal;
+    }
     if (parameters.output.field_interval > 0 && time >= next_output_time - 1e-12)
       write_fields ();
     if (step_number % parameters.output.progress_interval == 0 ||
@@ -590,6 +612,9 @@ void TwoFluidSolver<dim>::run ()
   }
   if (parameters.output.field_interval == 0)
     write_fields ();
+  if (checkpoint.at_end &&
+      !(checkpoint.interval > 0 && step_number % checkpoint.interval == 0))
+    write_checkpoint ();
   const double elapsed =
       std::chrono::duration<double> (std::chrono::steady_clock::now () - start).count ();
   pcout << "Finished: " << step_number << " steps (" << rejected_steps
@@ -600,6 +625,7 @@ void TwoFluidSolver<dim>::run ()
         << " us per cell per step; velocity AMG builds "
         << preconditioner->velocity_builds << std::endl;
   timer.print_wall_time_statistics (communicator);
+  return RunEnd::finished;
 }
 
 template class TwoFluidSolver<2>;

@@ -2,6 +2,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/tensor.h>
+#include <wetbed/core/checkpoint_parameters.h>
 #include <wetbed/core/kinetic_theory_parameters.h>
 #include <wetbed/core/wet_particle_parameters.h>
 
@@ -145,6 +146,7 @@ struct Parameters
   TimeSteppingParameters      time;
   LinearSolverParameters      linear_solver;
   OutputParameters            output;
+  CheckpointParameters        checkpoint;
   bool                        stabilization; // SUPG + outlet backflow terms
   std::string                 parameter_file_directory;
 

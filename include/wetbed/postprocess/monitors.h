@@ -44,9 +44,16 @@ class Monitors
 {
 public:
   /** probe_heights name the alpha_s_plane_<height> columns. */
-  void                           open (const std::string         &filename,
-                                       bool                       write,
-                                       const std::vector<double> &probe_heights = {});
+  void open (const std::string         &filename,
+             bool                       write,
+             const std::vector<double> &probe_heights = {});
+  /** Continues `filename` of a resumed run: cut back to its first `bytes` (the rows up
+   * to the checkpoint) and appended to from there. */
+  void reopen (const std::string &filename, bool write, unsigned long long bytes);
+  /** Bytes of monitors.csv written so far (rank 0; 0 elsewhere). */
+  unsigned long long bytes_written ();
+  /** Makes `row` the last row without writing it (a resumed run's last saved state). */
+  void                           restore (const MonitorRow &row) { rows.push_back (row); }
   void                           add (const MonitorRow &row);
   const MonitorRow              &last () const { return rows.back (); }
   const std::vector<MonitorRow> &all () const { return rows; }

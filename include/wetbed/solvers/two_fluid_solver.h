@@ -49,11 +49,21 @@ public:
   /** Attach a manufactured solution (verification runs only) before run(). */
   void set_manufactured_solution (std::shared_ptr<const ManufacturedSolution<dim>> mms);
 
+  enum class RunEnd
+  {
+    finished,         // reached the end time
+    stopped_by_signal // SIGTERM/SIGINT: stopped after a step, checkpoint written
+  };
   /** Reads the mesh, sets up and integrates to the end time. */
-  void run ();
+  RunEnd run ();
 
-  /** Reads the mesh, sets up and imposes the initial state (run() calls it). */
+  /** Reads the mesh, sets up and imposes the initial state, or with checkpoint/resume
+   * the saved state (run() calls it). */
   void initialize ();
+
+  /** Saves the run state in <output folder>/checkpoint (source/solvers/checkpoint.cc);
+   * collective. */
+  void write_checkpoint ();
 
   /** Advances one accepted time step (retrying smaller steps as needed). */
   void advance ();
@@ -73,9 +83,11 @@ public:
 
 private:
   // set-up (two_fluid_solver.cc)
-  void   setup_dofs ();
-  void   make_flow_constraints (double at_time);
-  void   set_initial_state ();
+  void setup_dofs ();
+  void make_flow_constraints (double at_time);
+  void set_initial_state ();
+  /** Mesh, fields and time-stepping state from the checkpoint (checkpoint.cc). */
+  void   resume_from_checkpoint ();
   bool   try_time_step (double dt, unsigned int bdf_order);
   double next_time_step (double dt) const;
 
@@ -180,6 +192,7 @@ private:
   unsigned int iterations_after_build = 0;
   double       dt_at_build            = 1.0;
   bool         initialized            = false;
-  std::string  rejection_reason; // why the last attempted step was rejected
+  bool         resumed                = false; // the state came from a checkpoint
+  std::string  rejection_reason;               // why the last attempted step was rejected
 };
 } // namespace wetbed

@@ -1,0 +1,19 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+namespace wetbed
+{
+/** `subsection checkpoint`: when the whole run state is saved and whether a run resumes
+ * from the last saved state (`<output folder>/checkpoint`). */
+struct CheckpointParameters
+{
+  unsigned int interval;  // accepted steps between checkpoints (0: none on a schedule)
+  bool         at_end;    // also at the end time (a finished run can be extended)
+  bool         on_signal; // SIGTERM/SIGINT: save after the current step, then stop
+  bool         resume;    // continue from the checkpoint instead of the initial state
+
+  static void declare_parameters (dealii::ParameterHandler &prm);
+  void        parse_parameters (dealii::ParameterHandler &prm);
+};
+} // namespace wetbed
