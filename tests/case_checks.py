@@ -3,7 +3,7 @@
 
 usage: case_checks.py CHECK WETBED SOURCE_DIR WORK_DIR
 CHECK: ergun | hydrostatic | packed | settling | ramp | kinetic | ranks | bubbling | hdf5 |
-       restart
+       restart | amr
 """
 import csv
 import math
@@ -49,9 +49,11 @@ def read_monitors(folder):
 
 
 def same_monitors(reference, rows, what, tolerance):
-    """Same steps and times; pressure drop, max alpha_s and mean Theta within the
-    relative tolerance; solids mass to round-off."""
-    expect(len(rows) == len(reference) and all(abs(a["time"] - b["time"]) <= 1e-14 for a, b in zip(reference, rows)),
+    """Same steps and times (the adaptive dt follows the velocities: relative tolerance);
+    pressure drop, max alpha_s and mean Theta within the relative tolerance; solids mass
+    to round-off."""
+    expect(len(rows) == len(reference) and all(abs(a["time"] - b["time"]) <= 1e-14 + tolerance * a["time"]
+                                               for a, b in zip(reference, rows)),
            f"{what}: the same {len(reference)} monitor rows at the same times ({len(rows)} rows)")
     for name in ("pressure_drop", "alpha_s_max", "theta_mean", "bed_height"):
         worst = max(abs(a[name] - b[name]) / max(abs(a[name]), 1e-300) for a, b in zip(reference, rows))
@@ -288,6 +290,30 @@ elif check == "restart":
            f"SIGTERM at step {stopped_at}: exit 4 (got {process.returncode}) with a checkpoint")
     rows = run("kinetic_theory_bed", overrides + "end\n", 1, folder, resume=True)
     same_monitors(reference, rows, f"stopped by SIGTERM at step {stopped_at}, resumed", 1e-6)
+elif check == "amr":
+    # bubble-following AMR adapting at every step (refining and coarsening) on the 2D
+    # bubbling bed: solids mass to 1e-12 and bounds at every step; T13: 2 ranks equal 1
+    # rank with AMR on; T14 with AMR: continued on 2 ranks from a 1-rank checkpoint
+    import shutil
+    overrides = ("subsection time stepping\n set end time = 0.02\nend\n"
+                 "subsection adaptive refinement\n set enabled = true\n set interval = 1\n"
+                 " set minimum level = 0\n set maximum level = 3\nend\n"
+                 "subsection checkpoint\n set interval = 20\n set at end = false\nend\n")
+    one = run("bubbling_bed_2d", overrides, 1, os.path.join(work, "amr_1"))
+    bounds_and_mass(one, 0.61, 1e-12)
+    cells = [int(r["active_cells"]) for r in one]
+    grew, shrank = sum(b > a for a, b in zip(cells, cells[1:])), sum(b < a for a, b in zip(cells, cells[1:]))
+    expect(grew >= 10 and shrank >= 2, f"the mesh followed the bed: {cells[0]} -> {cells[-1]} cells, "
+                                       f"{grew} adaptations with more cells, {shrank} with fewer")
+    expect(max(cells) < 600 * 4 ** 2, f"AMR keeps fewer cells ({max(cells)}) than the uniform level-3 mesh (9600)")
+    two = run("bubbling_bed_2d", overrides, 2, os.path.join(work, "amr_2"))
+    expect([int(r["active_cells"]) for r in two] == cells, "2 ranks adapt the mesh exactly as 1 rank")
+    same_monitors(one, two, "AMR on 2 ranks vs 1 rank", 1e-4)
+    folder = os.path.join(work, "amr_resumed")
+    shutil.rmtree(folder, ignore_errors=True)
+    shutil.copytree(os.path.join(work, "amr_1"), folder)
+    rows = run("bubbling_bed_2d", overrides, 2, folder, resume=True)
+    same_monitors(one, rows, "AMR run resumed at step 20 on 2 ranks", 1e-4)
 else:
     sys.exit(f"unknown check {check}")
 

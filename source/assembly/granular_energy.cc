@@ -252,10 +252,11 @@ bool TwoFluidSolver<dim>::update_granular_temperature (const BDFCoefficients &bd
             }
           }
         }
-        granular_energy_matrix.add (dofs, cell_matrix);
+        alpha_constraints.distribute_local_to_global (
+            cell_matrix, dofs, granular_energy_matrix);
       }
-      rhs.add (dofs, cell_rhs);
-      lumped.add (dofs, cell_mass);
+      alpha_constraints.distribute_local_to_global (cell_rhs, dofs, rhs);
+      alpha_constraints.distribute_local_to_global (cell_mass, dofs, lumped);
     }
     ++flow_cell;
   }
@@ -272,7 +273,7 @@ bool TwoFluidSolver<dim>::update_granular_temperature (const BDFCoefficients &bd
   if (algebraic)
   {
     for (const auto i : solution.locally_owned_elements ())
-      solution (i) = rhs (i) / lumped (i);
+      solution (i) = alpha_constraints.is_constrained (i) ? 0.0 : rhs (i) / lumped (i);
   }
   else
   {
@@ -308,6 +309,8 @@ bool TwoFluidSolver<dim>::update_granular_temperature (const BDFCoefficients &bd
     theta.local_element (i) =
         std::clamp (value, kt.minimum_temperature, kt.maximum_temperature);
   }
+  theta.zero_out_ghost_values ();
+  alpha_constraints.distribute (theta); // hanging nodes: from their parents
   theta.update_ghost_values ();
   return true;
 }

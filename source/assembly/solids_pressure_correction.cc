@@ -152,9 +152,10 @@ bool TwoFluidSolver<dim>::correct_solids_pressure (const AlphaVector     &alpha_
         cell_rhs (i) = std::sqrt (slopes[i]) * cell_mass (i) *
                        (alpha (dofs[i]) - alpha_momentum (dofs[i]));
       }
-      correction_matrix.add (dofs, cell_system);
-      compaction_flux_matrix.add (dofs, cell_flux);
-      rhs.add (dofs, cell_rhs);
+      alpha_constraints.distribute_local_to_global (
+          cell_system, cell_rhs, dofs, correction_matrix, rhs);
+      alpha_constraints.distribute_local_to_global (
+          cell_flux, dofs, compaction_flux_matrix);
     }
     ++flow_cell;
   }

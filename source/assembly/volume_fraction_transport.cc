@@ -14,9 +14,11 @@
 namespace wetbed
 {
 template <int dim>
-void VolumeFractionTransport<dim>::setup (const dealii::DoFHandler<dim> &dof_handler,
-                                          const dealii::Mapping<dim>    &mapping,
-                                          const Vector                  &layout)
+void VolumeFractionTransport<dim>::setup (
+    const dealii::DoFHandler<dim>           &dof_handler,
+    const dealii::Mapping<dim>              &mapping,
+    const dealii::AffineConstraints<double> &hanging_node_constraints,
+    const Vector                            &layout)
 {
   using namespace dealii;
   const MPI_Comm  comm     = dof_handler.get_triangulation ().get_communicator ();
@@ -24,41 +26,63 @@ void VolumeFractionTransport<dim>::setup (const dealii::DoFHandler<dim> &dof_han
   const IndexSet  relevant = DoFTools::extract_locally_relevant_dofs (dof_handler);
 
   DynamicSparsityPattern dsp (relevant);
-  DoFTools::make_sparsity_pattern (dof_handler, dsp);
+  DoFTools::make_sparsity_pattern (dof_handler, dsp, hanging_node_constraints, false);
   SparsityTools::distribute_sparsity_pattern (dsp, owned, comm, relevant);
 
   this->dof_handler = &dof_handler;
   this->mapping     = &mapping;
+  constraints       = &hanging_node_constraints;
   convection.reinit (owned, owned, dsp, comm);
   convection_transpose.reinit (owned, owned, dsp, comm);
-  mass.reinit (layout);
-  scratch_low.reinit (layout);
-  scratch_plus.reinit (layout);
-  scratch_minus.reinit (layout);
+  IndexSet columns (dof_handler.n_dofs ());
+  for (const auto row : owned)
+  {
+    std::vector<types::global_dof_index> row_columns;
+    for (auto it = dsp.begin (row); it != dsp.end (row); ++it)
+      row_columns.push_back (it->column ());
+    columns.add_indices (row_columns.begin (), row_columns.end ());
+  }
+  columns.add_indices (relevant);
+  work.reinit (owned, columns, comm);
+  work_x.reinit (work);
+  mass.reinit (work);
+  scratch_low.reinit (work);
+  scratch_plus.reinit (work);
+  scratch_minus.reinit (work);
+  Vector condensed_mass (layout);
 
   const QGauss<dim> quadrature (dof_handler.get_fe ().degree + 1);
   FEValues<dim>     fe_values (
       mapping, dof_handler.get_fe (), quadrature, update_values | update_JxW_values);
   const unsigned int                   n = dof_handler.get_fe ().n_dofs_per_cell ();
   std::vector<types::global_dof_index> dofs (n);
+  dealii::Vector<double>               cell_mass (n);
   for (const auto &cell : dof_handler.active_cell_iterators ())
     if (cell->is_locally_owned ())
     {
       fe_values.reinit (cell);
       cell->get_dof_indices (dofs);
+      cell_mass = 0;
       for (unsigned int q = 0; q < quadrature.size (); ++q)
         for (unsigned int i = 0; i < n; ++i)
-          mass (dofs[i]) += fe_values.shape_value (i, q) * fe_values.JxW (q);
+          cell_mass (i) += fe_values.shape_value (i, q) * fe_values.JxW (q);
+      hanging_node_constraints.distribute_local_to_global (
+          cell_mass, dofs, condensed_mass);
     }
-  mass.compress (VectorOperation::add);
+  condensed_mass.compress (VectorOperation::add);
+  mass.copy_locally_owned_data_from (condensed_mass);
   mass.update_ghost_values ();
 
-  const auto &partitioner = *layout.get_partitioner ();
+  const auto &partitioner = *work.get_partitioner ();
   rows.assign (owned.n_elements (), Row ());
+  constrained.assign (owned.n_elements (), false);
   unsigned int local_row = 0;
   for (const auto global_row : owned)
   {
-    Row &row = rows[local_row++];
+    constrained[local_row] = hanging_node_constraints.is_constrained (global_row);
+    Row &row               = rows[local_row++];
+    if (constrained[local_row - 1])
+      continue; // a hanging node: no equation, its value follows its parents
     for (auto it = convection.begin (global_row); it != convection.end (global_row); ++it)
       row.columns.push_back (partitioner.global_to_local (it->column ()));
     row.k.assign (row.columns.size (), 0.0);
@@ -99,8 +123,8 @@ void VolumeFractionTransport<dim>::set_velocity (const VelocityAtQuadrature &vel
             cell_k (i, j) += fe_values.shape_value (j, q) * advective_derivative;
         }
       cell_kt.copy_transposed (cell_k);
-      convection.add (dofs, cell_k);
-      convection_transpose.add (dofs, cell_kt);
+      constraints->distribute_local_to_global (cell_k, dofs, convection);
+      constraints->distribute_local_to_global (cell_kt, dofs, convection_transpose);
     }
   convection.compress (VectorOperation::add);
   convection_transpose.compress (VectorOperation::add);
@@ -108,7 +132,9 @@ void VolumeFractionTransport<dim>::set_velocity (const VelocityAtQuadrature &vel
   unsigned int local_row = 0;
   for (const auto global_row : owned)
   {
-    Row         &row  = rows[local_row++];
+    Row &row = rows[local_row++];
+    if (row.columns.empty ())
+      continue;
     auto         it_t = convection_transpose.begin (global_row);
     unsigned int e    = 0;
     for (auto it = convection.begin (global_row); it != convection.end (global_row);
@@ -121,11 +147,29 @@ void VolumeFractionTransport<dim>::set_velocity (const VelocityAtQuadrature &vel
 }
 
 template <int dim>
-unsigned int VolumeFractionTransport<dim>::advance (Vector      &alpha,
+void VolumeFractionTransport<dim>::load (const Vector &alpha_out)
+{
+  work.copy_locally_owned_data_from (alpha_out);
+  work.update_ghost_values ();
+}
+
+template <int dim>
+void VolumeFractionTransport<dim>::store (Vector &alpha_out) const
+{
+  alpha_out.zero_out_ghost_values ();
+  alpha_out.copy_locally_owned_data_from (work);
+  constraints->distribute (alpha_out); // hanging nodes: convex combinations of parents
+  alpha_out.update_ghost_values ();
+}
+
+template <int dim>
+unsigned int VolumeFractionTransport<dim>::advance (Vector      &alpha_out,
                                                     const double dt,
                                                     const double cfl,
                                                     const double alpha_max)
 {
+  load (alpha_out);
+  Vector            &alpha   = work;
   const unsigned int n_owned = rows.size ();
   // d_ij = max(-k_ij, 0, -k_ji)
   std::vector<std::vector<double>> diffusion (n_owned);
@@ -135,6 +179,8 @@ unsigned int VolumeFractionTransport<dim>::advance (Vector      &alpha,
     const Row &row = rows[i];
     const auto m   = row.columns.size ();
     diffusion[i].resize (m);
+    if (constrained[i])
+      continue;
     double diagonal = 0, off_diagonal_sum = 0;
     for (unsigned int e = 0; e < m; ++e)
     {
@@ -172,6 +218,11 @@ unsigned int VolumeFractionTransport<dim>::advance (Vector      &alpha,
       const Row   &row = rows[i];
       const double a_i = alpha.local_element (i);
       low_flux[i].assign (row.columns.size (), 0.0);
+      if (constrained[i])
+      {
+        low.local_element (i) = a_i;
+        continue;
+      }
       double change = 0;
       for (unsigned int e = 0; e < row.columns.size (); ++e)
       {
@@ -212,7 +263,7 @@ unsigned int VolumeFractionTransport<dim>::advance (Vector      &alpha,
       }
       upper               = std::max (std::min (upper, alpha_max), low.local_element (i));
       lower               = std::min (std::max (lower, 0.0), low.local_element (i));
-      const double m      = mass.local_element (i);
+      const double m      = constrained[i] ? 1.0 : mass.local_element (i);
       const double q_plus = m * (upper - low.local_element (i));
       const double q_minus      = m * (lower - low.local_element (i));
       r_plus.local_element (i)  = p_plus > 0 ? std::min (1.0, q_plus / p_plus) : 1.0;
@@ -251,6 +302,7 @@ unsigned int VolumeFractionTransport<dim>::advance (Vector      &alpha,
   total               = dealii::Utilities::MPI::sum (total, comm);
   limiter_activity    = total > 0 ? removed / total : 0.0;
   bound_activity      = dealii::Utilities::MPI::sum (bound_activity, comm);
+  store (alpha_out);
   return n_sub;
 }
 
@@ -271,7 +323,7 @@ double VolumeFractionTransport<dim>::limit_to_bounds (
       p_plus += std::max (g, 0.0);
       p_minus += std::min (g, 0.0);
     }
-    const double m            = mass.local_element (i);
+    const double m            = constrained[i] ? 1.0 : mass.local_element (i);
     const double q_plus       = m * std::max (alpha_max - alpha.local_element (i), 0.0);
     const double q_minus      = m * std::min (-alpha.local_element (i), 0.0);
     r_plus.local_element (i)  = p_plus > q_plus ? q_plus / p_plus : 1.0;
@@ -297,7 +349,8 @@ double VolumeFractionTransport<dim>::limit_to_bounds (
       sum += l * g;
       held_back += (1 - l) * std::abs (g);
     }
-    updated[i] = alpha.local_element (i) + sum / mass.local_element (i);
+    updated[i] =
+        alpha.local_element (i) + (constrained[i] ? 0.0 : sum / mass.local_element (i));
   }
   for (unsigned int i = 0; i < n_owned; ++i)
     alpha.local_element (i) = updated[i];
@@ -307,11 +360,15 @@ double VolumeFractionTransport<dim>::limit_to_bounds (
 
 template <int dim>
 double VolumeFractionTransport<dim>::apply_diffusive_fluxes (
-    Vector                                       &alpha,
+    Vector                                       &alpha_out,
     const dealii::TrilinosWrappers::SparseMatrix &A,
-    const Vector                                 &x,
+    const Vector                                 &x_in,
     const double                                  alpha_max)
 {
+  load (alpha_out);
+  Vector &alpha = work, &x = work_x;
+  x.copy_locally_owned_data_from (x_in);
+  x.update_ghost_values ();
   const auto                      &partitioner = *alpha.get_partitioner ();
   const unsigned int               n_owned     = rows.size ();
   std::vector<std::vector<double>> flux (n_owned);
@@ -319,6 +376,8 @@ double VolumeFractionTransport<dim>::apply_diffusive_fluxes (
   {
     const Row &row = rows[i];
     flux[i].assign (row.columns.size (), 0.0);
+    if (constrained[i])
+      continue;
     const auto global_row = partitioner.local_to_global (i);
     for (auto it = A.begin (global_row); it != A.end (global_row); ++it)
     {
@@ -331,6 +390,7 @@ double VolumeFractionTransport<dim>::apply_diffusive_fluxes (
     }
   }
   const double held_back = limit_to_bounds (alpha, flux, alpha_max);
+  store (alpha_out);
   return dealii::Utilities::MPI::sum (held_back, alpha.get_mpi_communicator ());
 }
 

@@ -538,6 +538,7 @@ void Parameters::declare_parameters (ParameterHandler &prm)
   LinearSolverParameters::declare_parameters (prm);
   OutputParameters::declare_parameters (prm);
   CheckpointParameters::declare_parameters (prm);
+  AdaptiveRefinementParameters::declare_parameters (prm);
 }
 
 void Parameters::parse_parameters (ParameterHandler &prm)
@@ -566,6 +567,7 @@ void Parameters::parse_parameters (ParameterHandler &prm)
   linear_solver.parse_parameters (prm);
   output.parse_parameters (prm);
   checkpoint.parse_parameters (prm);
+  adaptive_refinement.parse_parameters (prm, mesh.initial_refinement);
 }
 
 unsigned int Parameters::read_dimension (const std::string &filename)

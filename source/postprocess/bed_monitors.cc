@@ -21,6 +21,7 @@ template <int dim>
 MonitorRow TwoFluidSolver<dim>::evaluate_monitors () const
 {
   MonitorRow row;
+  row.active_cells   = triangulation.n_global_active_cells ();
   row.step           = step_number;
   row.time           = time;
   row.time_step      = previous_time_step;

@@ -18,7 +18,7 @@ void Monitors::open (const std::string         &filename,
           "fluidization_index,solids_mass,solids_mass_drift,alpha_s_min,alpha_s_max,"
           "gas_speed_max,solids_speed_max,bed_height,theta_min,theta_mean,theta_max,"
           "granular_production,granular_dissipation,granular_drag_exchange,"
-          "granular_wall_flux";
+          "granular_wall_flux,active_cells";
   for (const double h : probe_heights)
     file << ",alpha_s_plane_" << h;
   file << '\n';
@@ -57,7 +57,7 @@ void Monitors::add (const MonitorRow &r)
        << r.solids_speed_max << ',' << r.bed_height << ',' << r.theta_min << ','
        << r.theta_mean << ',' << r.theta_max << ',' << r.granular_energy.production << ','
        << r.granular_energy.dissipation << ',' << r.granular_energy.drag_exchange << ','
-       << r.granular_energy.wall_flux;
+       << r.granular_energy.wall_flux << ',' << r.active_cells;
   for (const double a : r.plane_alpha)
     file << ',' << a;
   file << '\n';

@@ -30,10 +30,10 @@ TwoFluidSolver<dim>::TwoFluidSolver (const Parameters &parameters, MPI_Comm comm
     : parameters (parameters), communicator (communicator),
       pcout (std::cout, Utilities::MPI::this_mpi_process (communicator) == 0),
       timer (pcout, TimerOutput::never, TimerOutput::wall_times),
+      // only the 2:1 balance at vertices: deal.II's other smoothing rules act on the
+      // locally owned cells and made the adapted mesh depend on the partition
       triangulation (communicator,
-                     typename Triangulation<dim>::MeshSmoothing (
-                         Triangulation<dim>::smoothing_on_refinement |
-                         Triangulation<dim>::smoothing_on_coarsening)),
+                     Triangulation<dim>::limit_level_difference_at_vertices),
       mapping (parameters.mesh.mapping_degree),
       flow_fe (FE_Q<dim> (2), 2 * dim, FE_Q<dim> (1), 1),
       flow_dof_handler (triangulation), alpha_fe (1), alpha_dof_handler (triangulation),
@@ -107,6 +107,13 @@ void TwoFluidSolver<dim>::initialize ()
                                    triangulation);
     setup_dofs ();
     set_initial_state ();
+    // resolve the initial bed surface: adapt, then impose the initial state anew
+    if (parameters.adaptive_refinement.enabled)
+      for (unsigned int c = 0; c < parameters.adaptive_refinement.initial_cycles; ++c)
+      {
+        adapt_mesh ();
+        set_initial_state ();
+      }
     monitors.open (folder + "/monitors.csv",
                    Utilities::MPI::this_mpi_process (communicator) == 0,
                    parameters.output.probe_heights);
@@ -140,6 +147,10 @@ void TwoFluidSolver<dim>::setup_dofs ()
   // the solids fraction first: the inlet constraints read it
   const IndexSet alpha_relevant =
       DoFTools::extract_locally_relevant_dofs (alpha_dof_handler);
+  alpha_constraints.clear ();
+  alpha_constraints.reinit (alpha_relevant);
+  DoFTools::make_hanging_node_constraints (alpha_dof_handler, alpha_constraints);
+  alpha_constraints.close ();
   alpha.reinit (alpha_dof_handler.locally_owned_dofs (), alpha_relevant, communicator);
   alpha_old.reinit (alpha);
   alpha_old2.reinit (alpha);
@@ -177,12 +188,12 @@ void TwoFluidSolver<dim>::setup_dofs ()
   flow_old.reinit (flow_solution);
   flow_old2.reinit (flow_solution);
 
-  transport.setup (alpha_dof_handler, mapping, alpha);
+  transport.setup (alpha_dof_handler, mapping, alpha_constraints, alpha);
 
   {
     const IndexSet         alpha_owned = alpha_dof_handler.locally_owned_dofs ();
     DynamicSparsityPattern dsp (alpha_relevant);
-    DoFTools::make_sparsity_pattern (alpha_dof_handler, dsp);
+    DoFTools::make_sparsity_pattern (alpha_dof_handler, dsp, alpha_constraints, false);
     SparsityTools::distribute_sparsity_pattern (
         dsp, alpha_owned, communicator, alpha_relevant);
     correction_matrix.reinit (alpha_owned, alpha_owned, dsp, communicator);
@@ -191,7 +202,13 @@ void TwoFluidSolver<dim>::setup_dofs ()
       granular_energy_matrix.reinit (alpha_owned, alpha_owned, dsp, communicator);
   }
 
+  // a new mesh needs new hierarchies; the build counts go on
+  const unsigned int velocity_builds =
+      preconditioner ? preconditioner->velocity_builds : 0;
+  const unsigned int schur_builds = preconditioner ? preconditioner->schur_builds : 0;
   preconditioner = std::make_unique<BlockPreconditioner> (parameters.linear_solver);
+  preconditioner->velocity_builds = velocity_builds;
+  preconditioner->schur_builds    = schur_builds;
   preconditioner->set_coupling (flow_matrix.block (0, 1));
 
   double h = std::numeric_limits<double>::max ();
@@ -200,9 +217,10 @@ void TwoFluidSolver<dim>::setup_dofs ()
       h = std::min (h, cell->minimum_vertex_distance ());
   min_node_spacing = Utilities::MPI::min (h, communicator) / 2.0;
 
-  pcout << "Mesh: " << triangulation.n_global_active_cells () << " cells; flow DoFs "
-        << dofs_per_block[0] << " (u_g, u_s) + " << dofs_per_block[1]
-        << " (p'), alpha_s DoFs " << alpha_dof_handler.n_dofs () << std::endl;
+  if (!initialized) // adaptations: the cell count is in monitors.csv
+    pcout << "Mesh: " << triangulation.n_global_active_cells () << " cells; flow DoFs "
+          << dofs_per_block[0] << " (u_g, u_s) + " << dofs_per_block[1]
+          << " (p'), alpha_s DoFs " << alpha_dof_handler.n_dofs () << std::endl;
 }
 
 template <int dim>
@@ -274,6 +292,8 @@ void TwoFluidSolver<dim>::set_initial_state ()
           alpha (dofs[v]) = value;
       }
     }
+  alpha.zero_out_ghost_values ();
+  alpha_constraints.distribute (alpha); // hanging nodes of an adapted mesh
   alpha.update_ghost_values ();
   alpha_old  = alpha;
   alpha_old2 = alpha;
@@ -581,6 +601,12 @@ typename TwoFluidSolver<dim>::RunEnd TwoFluidSolver<dim>::run ()
   while (time < ts.end_time * (1 - 1e-12))
   {
     advance ();
+    if (parameters.adaptive_refinement.enabled &&
+        step_number % parameters.adaptive_refinement.interval == 0)
+    {
+      adapt_mesh ();
+      time_step = next_time_step (previous_time_step); // the CFL of the new mesh
+    }
     if (checkpoint.interval > 0 && step_number % checkpoint.interval == 0)
       write_checkpoint ();
     if (checkpoint.on_signal && stop_requested (communicator))
@@ -622,8 +648,9 @@ typename TwoFluidSolver<dim>::RunEnd TwoFluidSolver<dim>::run ()
         << " s per simulated second, "
         << 1e6 * elapsed / std::max (1u, step_number) /
                triangulation.n_global_active_cells ()
-        << " us per cell per step; velocity AMG builds "
-        << preconditioner->velocity_builds << std::endl;
+        << " us per cell per step (" << triangulation.n_global_active_cells ()
+        << " cells at the end); velocity AMG builds " << preconditioner->velocity_builds
+        << std::endl;
   timer.print_wall_time_statistics (communicator);
   return RunEnd::finished;
 }

@@ -2,6 +2,7 @@
 
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/mapping.h>
+#include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
@@ -21,6 +22,12 @@ namespace wetbed
  * d_ij = max(-k_ij, 0, -k_ji) for the low-order update, and Zalesak's limiter of the
  * antidiffusive fluxes with local bounds and the global bounds [0, alpha_max]
  * (Kuzmin-Turek algebraic FCT). Works on distributed vectors with ghosts.
+ *
+ * On adaptively refined meshes every operator is condensed with the hanging-node
+ * constraints (C^T K C, C^T m): the columns of the condensed K still sum to zero and
+ * sum_i m_i alpha_i is still the integral of alpha_h, so the transport stays exactly
+ * conservative; hanging nodes take their constrained (convex) values after each update,
+ * so the bounds hold there too.
  */
 template <int dim>
 class VolumeFractionTransport
@@ -29,9 +36,10 @@ public:
   using Vector = dealii::LinearAlgebra::distributed::Vector<double>;
 
   /** Builds the graph, the lumped mass and the derivative matrices (once per mesh). */
-  void setup (const dealii::DoFHandler<dim> &dof_handler,
-              const dealii::Mapping<dim>    &mapping,
-              const Vector                  &layout);
+  void setup (const dealii::DoFHandler<dim>           &dof_handler,
+              const dealii::Mapping<dim>              &mapping,
+              const dealii::AffineConstraints<double> &hanging_node_constraints,
+              const Vector                            &layout);
 
   /** Fills `u` with the solids velocity at the quadrature points of `fe_values`' cell. */
   using VelocityAtQuadrature =
@@ -82,12 +90,19 @@ private:
     std::vector<double>       k;       // int phi_j u . grad phi_i
     std::vector<double>       kt;      // int phi_i u . grad phi_j
   };
-  const dealii::DoFHandler<dim>         *dof_handler = nullptr;
-  const dealii::Mapping<dim>            *mapping     = nullptr;
+  const dealii::DoFHandler<dim>           *dof_handler = nullptr;
+  const dealii::Mapping<dim>              *mapping     = nullptr;
+  const dealii::AffineConstraints<double> *constraints = nullptr;
+  std::vector<bool> constrained; // per locally owned dof: a hanging node
   dealii::TrilinosWrappers::SparseMatrix convection, convection_transpose;
   std::vector<Row> rows; // one per locally owned dof, in local order
   Vector           mass;
-  // work vectors of one sub-step (ghosted), allocated with the graph
-  Vector scratch_low, scratch_plus, scratch_minus;
+  /** Copies alpha_out's owned values into `work` (ghosted with every column). */
+  void load (const Vector &alpha_out);
+  /** Copies `work` back into alpha_out; hanging nodes follow their parents. */
+  void store (Vector &alpha_out) const;
+  // work vectors (owned + every column of the owned rows as ghosts: condensed rows of
+  // adapted meshes reach beyond the locally relevant dofs)
+  Vector work, work_x, scratch_low, scratch_plus, scratch_minus;
 };
 } // namespace wetbed

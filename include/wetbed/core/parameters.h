@@ -2,6 +2,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/tensor.h>
+#include <wetbed/core/adaptive_refinement_parameters.h>
 #include <wetbed/core/checkpoint_parameters.h>
 #include <wetbed/core/kinetic_theory_parameters.h>
 #include <wetbed/core/wet_particle_parameters.h>
@@ -134,21 +135,22 @@ struct OutputParameters
 /** Everything a run reads from its .prm file. */
 struct Parameters
 {
-  unsigned int                dimension;
-  MeshParameters              mesh;
-  PhysicalProperties          physical;
-  std::string                 drag_model;
-  SolidsStressParameters      solids_stress;
-  KineticTheoryParameters     kinetic_theory;
-  WetParticleParameters       wet;
-  BoundaryConditionParameters boundary;
-  InitialConditionParameters  initial;
-  TimeSteppingParameters      time;
-  LinearSolverParameters      linear_solver;
-  OutputParameters            output;
-  CheckpointParameters        checkpoint;
-  bool                        stabilization; // SUPG + outlet backflow terms
-  std::string                 parameter_file_directory;
+  unsigned int                 dimension;
+  MeshParameters               mesh;
+  PhysicalProperties           physical;
+  std::string                  drag_model;
+  SolidsStressParameters       solids_stress;
+  KineticTheoryParameters      kinetic_theory;
+  WetParticleParameters        wet;
+  BoundaryConditionParameters  boundary;
+  InitialConditionParameters   initial;
+  TimeSteppingParameters       time;
+  LinearSolverParameters       linear_solver;
+  OutputParameters             output;
+  CheckpointParameters         checkpoint;
+  AdaptiveRefinementParameters adaptive_refinement;
+  bool                         stabilization; // SUPG + outlet backflow terms
+  std::string                  parameter_file_directory;
 
   static void declare_parameters (dealii::ParameterHandler &prm);
   void        parse_parameters (dealii::ParameterHandler &prm);

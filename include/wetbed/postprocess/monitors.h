@@ -36,7 +36,8 @@ struct MonitorRow
   double theta_min = 0, theta_mean = 0, theta_max = 0; // Theta (mean: solids-weighted)
   double granular_sound_speed = 0; // max sqrt(2 P_kin/(alpha_s rho_s)) (m/s)
   GranularEnergyBudget granular_energy;
-  std::vector<double>  plane_alpha; // alpha_s averaged over the probe cell layers
+  std::vector<double>  plane_alpha;      // alpha_s averaged over the probe cell layers
+  unsigned long long   active_cells = 0; // of the (adapted) mesh
 };
 
 /** Collects MonitorRows and writes them (rank 0) to a CSV file. */

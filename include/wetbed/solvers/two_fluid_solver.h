@@ -86,6 +86,15 @@ private:
   void setup_dofs ();
   void make_flow_constraints (double at_time);
   void set_initial_state ();
+  // adaptive refinement (source/solvers/adaptive_refinement.cc)
+  /** Flags, refines/coarsens, transfers every field and its history, rebuilds. */
+  void adapt_mesh ();
+  void flag_cells_for_adaptation ();
+  /** Gives `target - sum m a` back to `a` where `candidate` (else anywhere), in
+   * proportion to the room within [0, alpha_max]. */
+  void restore_solids_mass (AlphaVector             &a,
+                            double                   target,
+                            const std::vector<bool> &candidate) const;
   /** Mesh, fields and time-stepping state from the checkpoint (checkpoint.cc). */
   void   resume_from_checkpoint ();
   bool   try_time_step (double dt, unsigned int bdf_order);
@@ -153,6 +162,8 @@ private:
 
   std::vector<dealii::IndexSet>     flow_owned, flow_relevant;
   dealii::AffineConstraints<double> flow_constraints, schur_constraints;
+  // hanging nodes of the alpha_s/Theta space (empty on uniform meshes)
+  dealii::AffineConstraints<double> alpha_constraints;
 
   dealii::TrilinosWrappers::BlockSparseMatrix flow_matrix, schur_matrix;
   BlockVector                                 flow_rhs;

@@ -1,0 +1,212 @@
+#include <wetbed/solvers/two_fluid_solver.h>
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/distributed/solution_transfer.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/numerics/error_estimator.h>
+
+#include <algorithm>
+#include <set>
+
+/*
+ * Bubble-following adaptive refinement. The indicator of a cell K is
+ *   eta_K = h_K max_K |grad alpha_s| / alpha_max + w eta_Kelly,K(u_s) / max eta_Kelly
+ * (the jump of alpha_s across the cell, large at gas-emulsion interfaces and zero in
+ * the freeboard and a uniform emulsion, plus a Kelly term that follows the solids
+ * shear); cells above `refine threshold` are refined and cells below `coarsen
+ * threshold` coarsened within [minimum level, maximum level].
+ *
+ * Every field and both BDF history levels move with parallel SolutionTransfer. On Q1,
+ * refinement interpolates exactly; coarsening injects the parent's vertex values and
+ * loses sum(m alpha) = int alpha_h where alpha_h was not linear over the children. That
+ * deficit is given back on the nodes of the coarsened cells, in proportion to each
+ * node's room below alpha_max (or above 0 when mass must go), so the solids mass is
+ * conserved to round-off and 0 <= alpha_s <= alpha_max still holds.
+ */
+namespace wetbed
+{
+using namespace dealii;
+
+template <int dim>
+void TwoFluidSolver<dim>::flag_cells_for_adaptation ()
+{
+  const auto   &amr = parameters.adaptive_refinement;
+  Vector<float> indicator (triangulation.n_active_cells ());
+  {
+    const QGauss<dim>           quadrature (2);
+    FEValues<dim>               values (mapping, alpha_fe, quadrature, update_gradients);
+    std::vector<Tensor<1, dim>> gradients (quadrature.size ());
+    const double                alpha_max = parameters.physical.maximum_packing;
+    for (const auto &cell : alpha_dof_handler.active_cell_iterators ())
+      if (cell->is_locally_owned ())
+      {
+        values.reinit (cell);
+        values.get_function_gradients (alpha, gradients);
+        double largest = 0;
+        for (const auto &g : gradients)
+          largest = std::max (largest, g.norm ());
+        indicator (cell->active_cell_index ()) = cell->diameter () * largest / alpha_max;
+      }
+  }
+  if (amr.velocity_weight > 0)
+  {
+    Vector<float> kelly (triangulation.n_active_cells ());
+    ComponentMask solids (2 * dim + 1, false);
+    for (unsigned int d = 0; d < dim; ++d)
+      solids.set (dim + d, true);
+    KellyErrorEstimator<dim>::estimate (
+        mapping, flow_dof_handler, QGauss<dim - 1> (3), {}, flow_solution, kelly, solids);
+    const double largest = Utilities::MPI::max (
+        static_cast<double> (*std::max_element (kelly.begin (), kelly.end ())),
+        communicator);
+    if (largest > 0)
+      for (unsigned int k = 0; k < kelly.size (); ++k)
+        indicator (k) += amr.velocity_weight * kelly (k) / largest;
+  }
+  for (const auto &cell : triangulation.active_cell_iterators ())
+    if (cell->is_locally_owned ())
+    {
+      const double eta = indicator (cell->active_cell_index ());
+      if (eta > amr.refine_threshold &&
+          cell->level () < static_cast<int> (amr.maximum_level))
+        cell->set_refine_flag ();
+      else if (eta < amr.coarsen_threshold &&
+               cell->level () > static_cast<int> (amr.minimum_level))
+        cell->set_coarsen_flag ();
+    }
+}
+
+template <int dim>
+void TwoFluidSolver<dim>::restore_solids_mass (AlphaVector             &a,
+                                               const double             target,
+                                               const std::vector<bool> &candidate) const
+{
+  // sum_i m_i a_i is int alpha_h (condensed lumped mass, hanging nodes included)
+  const auto  &m         = transport.lumped_mass ();
+  const double alpha_max = parameters.physical.maximum_packing;
+  const double deficit =
+      (target - solids_mass (a)) / parameters.physical.particle_density; // volume
+  // room: below alpha_max to add mass, above 0 to remove it; on the coarsened cells'
+  // nodes, or everywhere if they cannot take it (with any room at all)
+  auto room = [&] (const unsigned int i)
+  {
+    if (alpha_constraints.is_constrained (a.get_partitioner ()->local_to_global (i)))
+      return 0.0;
+    return deficit > 0 ? std::max (alpha_max - a.local_element (i), 0.0)
+                       : std::max (a.local_element (i), 0.0);
+  };
+  for (const bool restrict_to_candidates : {true, false})
+  {
+    double capacity = 0;
+    for (unsigned int i = 0; i < a.locally_owned_size (); ++i)
+      if (!restrict_to_candidates || candidate[i])
+        capacity += m.local_element (i) * room (i);
+    capacity = Utilities::MPI::sum (capacity, communicator);
+    if (capacity <= 2.0 * std::abs (deficit) && restrict_to_candidates)
+      continue;
+    if (capacity <= 0)
+      break;
+    const double share = std::min (std::abs (deficit) / capacity, 1.0);
+    for (unsigned int i = 0; i < a.locally_owned_size (); ++i)
+      if (!restrict_to_candidates || candidate[i])
+        a.local_element (i) += (deficit > 0 ? share : -share) * room (i);
+    break;
+  }
+  a.zero_out_ghost_values ();
+  alpha_constraints.distribute (a);
+  a.update_ghost_values ();
+}
+
+template <int dim>
+void TwoFluidSolver<dim>::adapt_mesh ()
+{
+  TimerOutput::Scope scope (timer, "adaptive refinement");
+  flag_cells_for_adaptation ();
+  triangulation.prepare_coarsening_and_refinement ();
+
+  // the parents of the cells to be coarsened (they will be active, maybe elsewhere)
+  std::vector<std::string> coarsened_local;
+  for (const auto &cell : triangulation.active_cell_iterators ())
+    if (cell->is_locally_owned () && cell->coarsen_flag_set () && cell->level () > 0)
+      coarsened_local.push_back (cell->parent ()->id ().to_string ());
+  std::sort (coarsened_local.begin (), coarsened_local.end ());
+  coarsened_local.erase (std::unique (coarsened_local.begin (), coarsened_local.end ()),
+                         coarsened_local.end ());
+  std::set<std::string> coarsened;
+  for (const auto &part : Utilities::MPI::all_gather (communicator, coarsened_local))
+    coarsened.insert (part.begin (), part.end ());
+
+  std::vector<AlphaVector *> scalars{
+      &alpha, &alpha_old, &alpha_old2, &theta, &theta_old, &theta_old2};
+  double masses[3];
+  for (unsigned int k = 0; k < 6; ++k)
+  {
+    scalars[k]->update_ghost_values ();
+    if (k < 3)
+      masses[k] = solids_mass (*scalars[k]);
+  }
+
+  parallel::distributed::SolutionTransfer<dim, BlockVector> flow_transfer (
+      flow_dof_handler);
+  flow_transfer.prepare_for_coarsening_and_refinement (
+      std::vector<const BlockVector *>{&flow_solution, &flow_old, &flow_old2});
+  parallel::distributed::SolutionTransfer<dim, AlphaVector> scalar_transfer (
+      alpha_dof_handler);
+  std::vector<const AlphaVector *> scalar_inputs (scalars.begin (), scalars.end ());
+  scalar_transfer.prepare_for_coarsening_and_refinement (scalar_inputs);
+
+  triangulation.execute_coarsening_and_refinement ();
+  setup_dofs ();
+
+  {
+    std::vector<BlockVector>   owned (3, BlockVector (flow_owned, communicator));
+    std::vector<BlockVector *> pointers{&owned[0], &owned[1], &owned[2]};
+    flow_transfer.interpolate (pointers);
+    // hanging nodes of the new mesh take their constrained values
+    AffineConstraints<double> hanging (
+        DoFTools::extract_locally_relevant_dofs (flow_dof_handler));
+    DoFTools::make_hanging_node_constraints (flow_dof_handler, hanging);
+    hanging.close ();
+    for (auto &v : owned)
+      hanging.distribute (v);
+    flow_solution = owned[0];
+    flow_old      = owned[1];
+    flow_old2     = owned[2];
+  }
+  scalar_transfer.interpolate (scalars);
+
+  // the nodes of the coarsened cells, where the coarsening deficit is given back
+  std::vector<bool>                    candidate (alpha.locally_owned_size (), false);
+  std::vector<types::global_dof_index> dofs (alpha_fe.n_dofs_per_cell ());
+  for (const auto &cell : alpha_dof_handler.active_cell_iterators ())
+    if (!cell->is_artificial () && coarsened.count (cell->id ().to_string ()))
+    {
+      cell->get_dof_indices (dofs);
+      for (const auto dof : dofs)
+        if (alpha.locally_owned_elements ().is_element (dof))
+          candidate[alpha.get_partitioner ()->global_to_local (dof)] = true;
+    }
+  for (unsigned int k = 0; k < 6; ++k)
+  {
+    scalars[k]->zero_out_ghost_values ();
+    alpha_constraints.distribute (*scalars[k]);
+    scalars[k]->update_ghost_values ();
+    if (k < 3)
+      restore_solids_mass (*scalars[k], masses[k], candidate);
+  }
+  // the AMG hierarchy belongs to the old mesh
+  solves_since_build = std::numeric_limits<unsigned int>::max () / 2;
+}
+
+template void TwoFluidSolver<2>::adapt_mesh ();
+template void TwoFluidSolver<3>::adapt_mesh ();
+template void TwoFluidSolver<2>::flag_cells_for_adaptation ();
+template void TwoFluidSolver<3>::flag_cells_for_adaptation ();
+template void TwoFluidSolver<2>::restore_solids_mass (AlphaVector &,
+                                                      double,
+                                                      const std::vector<bool> &) const;
+template void TwoFluidSolver<3>::restore_solids_mass (AlphaVector &,
+                                                      double,
+                                                      const std::vector<bool> &) const;
+} // namespace wetbed
