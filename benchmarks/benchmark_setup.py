@@ -98,3 +98,18 @@ def dominant_frequency(t, signal, start_up):
     spectrum = numpy.abs(numpy.fft.rfft(values - values.mean()))
     frequencies = numpy.fft.rfftfreq(len(values), times[1] - times[0])
     return float(frequencies[1 + numpy.argmax(spectrum[1:])])
+
+
+def replace_doc_section(root, key, title, lines):
+    """Replaces the block between <!-- KEY:begin --> and <!-- KEY:end --> of
+    doc/benchmarks.md with LINES (appended under `## TITLE` if absent)."""
+    doc = os.path.join(root, "doc", "benchmarks.md")
+    text = open(doc).read() if os.path.isfile(doc) else "# Benchmarks\n"
+    begin, end = f"<!-- {key}:begin -->", f"<!-- {key}:end -->"
+    section = begin + "\n" + "\n".join(lines) + "\n" + end
+    if begin in text:
+        text = re.sub(re.escape(begin) + ".*?" + re.escape(end), lambda _: section, text, flags=re.S)
+    else:
+        text += f"\n## {title}\n\n" + section + "\n"
+    open(doc, "w").write(text)
+    print("updated doc/benchmarks.md")

@@ -1,7 +1,6 @@
 #include <wetbed/solvers/two_fluid_solver.h>
 
 #include <deal.II/base/quadrature_lib.h>
-#include <deal.II/distributed/solution_transfer.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/numerics/error_estimator.h>
@@ -137,44 +136,15 @@ void TwoFluidSolver<dim>::adapt_mesh ()
   for (const auto &part : Utilities::MPI::all_gather (communicator, coarsened_local))
     coarsened.insert (part.begin (), part.end ());
 
-  std::vector<AlphaVector *> scalars{
-      &alpha, &alpha_old, &alpha_old2, &theta, &theta_old, &theta_old2};
-  double masses[3];
-  for (unsigned int k = 0; k < 6; ++k)
-  {
-    scalars[k]->update_ghost_values ();
-    if (k < 3)
-      masses[k] = solids_mass (*scalars[k]);
-  }
-
-  parallel::distributed::SolutionTransfer<dim, BlockVector> flow_transfer (
-      flow_dof_handler);
-  flow_transfer.prepare_for_coarsening_and_refinement (
-      std::vector<const BlockVector *>{&flow_solution, &flow_old, &flow_old2});
-  parallel::distributed::SolutionTransfer<dim, AlphaVector> scalar_transfer (
-      alpha_dof_handler);
-  std::vector<const AlphaVector *> scalar_inputs (scalars.begin (), scalars.end ());
-  scalar_transfer.prepare_for_coarsening_and_refinement (scalar_inputs);
+  FieldTransfers transfers = attach_fields (false);
+  const auto     scalars   = scalar_fields (); // alpha_s^{n+1}, ^n, ^{n-1} first
+  double         masses[3];
+  for (unsigned int k = 0; k < 3; ++k)
+    masses[k] = solids_mass (*scalars[k]);
 
   triangulation.execute_coarsening_and_refinement ();
   setup_dofs ();
-
-  {
-    std::vector<BlockVector>   owned (3, BlockVector (flow_owned, communicator));
-    std::vector<BlockVector *> pointers{&owned[0], &owned[1], &owned[2]};
-    flow_transfer.interpolate (pointers);
-    // hanging nodes of the new mesh take their constrained values
-    AffineConstraints<double> hanging (
-        DoFTools::extract_locally_relevant_dofs (flow_dof_handler));
-    DoFTools::make_hanging_node_constraints (flow_dof_handler, hanging);
-    hanging.close ();
-    for (auto &v : owned)
-      hanging.distribute (v);
-    flow_solution = owned[0];
-    flow_old      = owned[1];
-    flow_old2     = owned[2];
-  }
-  scalar_transfer.interpolate (scalars);
+  receive_fields (transfers, false);
 
   // the nodes of the coarsened cells, where the coarsening deficit is given back
   std::vector<bool>                    candidate (alpha.locally_owned_size (), false);
@@ -187,14 +157,8 @@ void TwoFluidSolver<dim>::adapt_mesh ()
         if (alpha.locally_owned_elements ().is_element (dof))
           candidate[alpha.get_partitioner ()->global_to_local (dof)] = true;
     }
-  for (unsigned int k = 0; k < 6; ++k)
-  {
-    scalars[k]->zero_out_ghost_values ();
-    alpha_constraints.distribute (*scalars[k]);
-    scalars[k]->update_ghost_values ();
-    if (k < 3)
-      restore_solids_mass (*scalars[k], masses[k], candidate);
-  }
+  for (unsigned int k = 0; k < 3; ++k)
+    restore_solids_mass (*scalars[k], masses[k], candidate);
   // the AMG hierarchy belongs to the old mesh
   solves_since_build = std::numeric_limits<unsigned int>::max () / 2;
 }

@@ -2,7 +2,6 @@
 #include <wetbed/solvers/two_fluid_solver.h>
 
 #include <deal.II/base/mpi.h>
-#include <deal.II/distributed/solution_transfer.h>
 
 #include <boost/archive/text_iarchive.hpp>
 #include <boost/archive/text_oarchive.hpp>
@@ -229,24 +228,9 @@ void TwoFluidSolver<dim>::resume_from_checkpoint ()
   setup_dofs ();
 
   {
-    std::vector<BlockVector>   owned (3, BlockVector (flow_owned, communicator));
-    std::vector<BlockVector *> pointers{&owned[0], &owned[1], &owned[2]};
-    parallel::distributed::SolutionTransfer<dim, BlockVector> flow_transfer (
-        flow_dof_handler);
-    flow_transfer.deserialize (pointers);
-    flow_solution = owned[0];
-    flow_old      = owned[1];
-    flow_old2     = owned[2];
-  }
-  {
-    // ghosted targets: the cells' values are written into ghost entries too
-    std::vector<AlphaVector *> targets{
-        &alpha, &alpha_old, &alpha_old2, &theta, &theta_old, &theta_old2};
-    parallel::distributed::SolutionTransfer<dim, AlphaVector> scalar_transfer (
-        alpha_dof_handler);
-    scalar_transfer.deserialize (targets);
-    for (AlphaVector *v : targets)
-      v->update_ghost_values ();
+    FieldTransfers transfers{std::make_unique<FlowTransfer> (flow_dof_handler),
+                             std::make_unique<ScalarTransfer> (alpha_dof_handler)};
+    receive_fields (transfers, true);
   }
 
   time                = state.time;

@@ -15,6 +15,7 @@
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/timer.h>
+#include <deal.II/distributed/solution_transfer.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_q.h>
@@ -86,6 +87,24 @@ private:
   void setup_dofs ();
   void make_flow_constraints (double at_time);
   void set_initial_state ();
+  // moving the fields with the mesh (source/solvers/field_transfer.cc)
+  using FlowTransfer = dealii::parallel::distributed::SolutionTransfer<dim, BlockVector>;
+  using ScalarTransfer =
+      dealii::parallel::distributed::SolutionTransfer<dim, AlphaVector>;
+  struct FieldTransfers
+  {
+    std::unique_ptr<FlowTransfer>   flow;
+    std::unique_ptr<ScalarTransfer> scalars;
+  };
+  /** The fields a mesh change or a checkpoint carries, in their fixed order. */
+  std::vector<BlockVector *> flow_fields ();
+  std::vector<AlphaVector *> scalar_fields ();
+  /** Attaches every field to the triangulation, for a mesh change or for save(). */
+  FieldTransfers attach_fields (bool for_serialization);
+  /** After the mesh change (or load()) and setup_dofs(): every field on the new mesh,
+   * hanging nodes at their constrained values. */
+  void receive_fields (FieldTransfers &transfers, bool from_checkpoint);
+
   // adaptive refinement (source/solvers/adaptive_refinement.cc)
   /** Flags, refines/coarsens, transfers every field and its history, rebuilds. */
   void adapt_mesh ();
