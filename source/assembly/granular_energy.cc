@@ -4,6 +4,8 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/solver_gmres.h>
+
+#include <sstream>
 #include <deal.II/lac/trilinos_precondition.h>
 
 #include <limits>
@@ -288,26 +290,35 @@ bool TwoFluidSolver<dim>::update_granular_temperature (const BDFCoefficients &bd
     // moved by 8e-5 between scalar tolerances 1e-13 and 1e-16).
     SolverGMRES<TrilinosWrappers::MPI::Vector> gmres (
         control, SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData (30, true));
-    TrilinosWrappers::PreconditionAMG                 amg;
-    TrilinosWrappers::PreconditionAMG::AdditionalData data;
-    data.elliptic = false;
-    amg.initialize (granular_energy_matrix, data);
+    TrilinosWrappers::PreconditionILU amg;
+    amg.initialize (granular_energy_matrix);
     try
     {
       gmres.solve (granular_energy_matrix, solution, rhs, amg);
     }
-    catch (const SolverControl::NoConvergence &)
+    catch (const SolverControl::NoConvergence &failure)
     {
+      std::ostringstream reason;
+      reason << "granular temperature GMRES did not converge: " << failure.last_step
+             << " iterations, residual " << failure.last_residual / rhs.l2_norm ()
+             << " of |rhs| (target " << parameters.linear_solver.scalar_tolerance
+             << ")";
+      rejection_reason = reason.str ();
       return false;
     }
   }
+  bool finite = true;
   for (unsigned int i = 0; i < theta.locally_owned_size (); ++i)
   {
     const double value = solution[theta.get_partitioner ()->local_to_global (i)];
-    if (!std::isfinite (value))
-      return false;
+    finite             = finite && std::isfinite (value);
     theta.local_element (i) =
         std::clamp (value, kt.minimum_temperature, kt.maximum_temperature);
+  }
+  if (Utilities::MPI::logical_or (!finite, communicator))
+  {
+    rejection_reason = "NaN in the granular temperature";
+    return false;
   }
   theta.zero_out_ghost_values ();
   alpha_constraints.distribute (theta); // hanging nodes: from their parents

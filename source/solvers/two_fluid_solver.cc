@@ -469,7 +469,6 @@ bool TwoFluidSolver<dim>::try_time_step (const double dt, const unsigned int bdf
       if (kinetic_theory && manufactured->has_granular_temperature () &&
           !update_granular_temperature (bdf, dt))
       {
-        rejection_reason = "granular temperature solve failed";
         return false;
       }
       continue;
@@ -481,7 +480,6 @@ bool TwoFluidSolver<dim>::try_time_step (const double dt, const unsigned int bdf
     //    it also evolves in a held solids velocity field
     if (kinetic_theory && !update_granular_temperature (bdf, dt))
     {
-      rejection_reason = "granular temperature solve failed";
       return false;
     }
   }
