@@ -3,7 +3,7 @@
 
 usage: case_checks.py CHECK WETBED SOURCE_DIR WORK_DIR
 CHECK: ergun | hydrostatic | packed | settling | ramp | kinetic | ranks | bubbling | hdf5 |
-       restart | amr
+       restart | amr | failure
 """
 import csv
 import math
@@ -314,6 +314,25 @@ elif check == "amr":
     shutil.copytree(os.path.join(work, "amr_1"), folder)
     rows = run("bubbling_bed_2d", overrides, 2, folder, resume=True)
     same_monitors(one, rows, "AMR run resumed at step 20 on 2 ranks", 1e-4)
+elif check == "failure":
+    # issue 7: a step that cannot be saved by halving dt stops the run cleanly: status 3,
+    # a report naming the cause and where the failed state is extreme, the last good
+    # state as fields and as a checkpoint that a corrected case resumes from
+    folder = os.path.join(work, "failure")
+    failing = ("subsection linear solver\n set maximum iterations = 3\nend\n"
+               "subsection time stepping\n set end time = 2e-3\n set minimum time step = 2e-5\nend\n")
+    run("bubbling_bed_2d", failing, 1, folder, expected_exit=3)
+    report = os.path.join(folder, "failure_report.txt")
+    text = open(report).read() if os.path.isfile(report) else ""
+    print(text)
+    expect("cause of the last rejection: a linear solve did not converge" in text or
+           "cause of the last rejection: FGMRES did not converge" in text, "the report names the cause")
+    expect(all(k in text for k in ("alpha_s max", "Theta min", "|u_g| max", ") m", "P_s")),
+           "the report locates the extremes of alpha_s, Theta, u and gives the closures there")
+    expect(os.path.isfile(os.path.join(folder, "checkpoint", "state")) and os.path.isfile(os.path.join(folder, "fields_00001.pvtu")),
+           "the last good state was written (checkpoint and fields)")
+    rows = run("bubbling_bed_2d", "subsection time stepping\n set end time = 2e-3\nend\n", 1, folder, resume=True)
+    expect(rows[-1]["time"] >= 2e-3 - 1e-12, "the corrected case resumes from the checkpoint and finishes")
 else:
     sys.exit(f"unknown check {check}")
 

@@ -5,8 +5,8 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/solver_gmres.h>
 
-#include <sstream>
 #include <deal.II/lac/trilinos_precondition.h>
+#include <sstream>
 
 #include <limits>
 
@@ -301,8 +301,7 @@ bool TwoFluidSolver<dim>::update_granular_temperature (const BDFCoefficients &bd
       std::ostringstream reason;
       reason << "granular temperature GMRES did not converge: " << failure.last_step
              << " iterations, residual " << failure.last_residual / rhs.l2_norm ()
-             << " of |rhs| (target " << parameters.linear_solver.scalar_tolerance
-             << ")";
+             << " of |rhs| (target " << parameters.linear_solver.scalar_tolerance << ")";
       rejection_reason = reason.str ();
       return false;
     }

@@ -2,6 +2,7 @@
 #include <wetbed/core/stop_signal.h>
 #include <wetbed/solvers/two_fluid_solver.h>
 
+#include <fstream>
 #include <sstream>
 
 #include <deal.II/base/function.h>
@@ -554,9 +555,25 @@ void TwoFluidSolver<dim>::advance ()
     pcout << "  step rejected at t = " << time << " (" << rejection_reason
           << "); retrying with dt = " << dt << std::endl;
     if (dt < ts.minimum_time_step)
+    {
+      // stop cleanly: the diagnosis of the failed state, then the last good state
+      // saved as fields and as a checkpoint
+      const std::string report = describe_failed_state (2 * dt);
+      const std::string file   = parameters.output.folder + "/failure_report.txt";
+      if (Utilities::MPI::this_mpi_process (communicator) == 0)
+        std::ofstream (file) << report;
+      pcout << report;
+      flow_solution = saved_flow;
+      alpha         = alpha_old;
+      theta         = theta_old;
+      write_fields ();
+      write_checkpoint ();
       throw std::runtime_error ("time step fell below time stepping/minimum time step (" +
-                                std::to_string (ts.minimum_time_step) + ") at t = " +
-                                std::to_string (time) + ": the run stops here");
+                                std::to_string (ts.minimum_time_step) +
+                                ") at t = " + std::to_string (time) + " (" +
+                                rejection_reason + "); diagnosis in " + file +
+                                ", the last good state in checkpoint/");
+    }
     flow_solution = saved_flow;
     alpha         = alpha_old;
     theta         = theta_old;

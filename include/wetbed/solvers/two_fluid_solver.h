@@ -158,6 +158,10 @@ private:
   MonitorRow evaluate_monitors () const;
   void       write_fields () const;
 
+  /** The cause of the last rejection and where the failed state is extreme
+   * (source/solvers/failure_report.cc); collective. */
+  std::string describe_failed_state (double dt) const;
+
   double inlet_superficial_velocity (double t) const;
   double solids_mass (const AlphaVector &alpha) const;
   /** (height, alpha_s) of the discrete rest state at the given vertex heights, top down.
