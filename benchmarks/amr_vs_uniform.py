@@ -25,6 +25,8 @@ parser.add_argument("--start-up", type=float, default=1.0)
 parser.add_argument("--level", type=int, default=0, help="L: the coarsest uniform level")
 parser.add_argument("--jobs", type=int, default=2, help="runs at the same time (one core each)")
 parser.add_argument("--summarize-only", action="store_true", help="tabulate the runs already in the work folder")
+parser.add_argument("--until", type=float, default=None,
+                    help="average over start-up < t <= UNTIL only (compare runs of which one stopped early)")
 args = parser.parse_args()
 
 work = os.path.join(root, "build", "benchmarks", "amr_vs_uniform")
@@ -56,10 +58,18 @@ for name in cases:
         continue
     summary, _ = summarize_run(folder, log, args.start_up)
     rows = list(csv.DictReader(open(os.path.join(folder, "monitors.csv"))))
+    until = args.until or args.end_time
+    rows = [r for r in rows if float(r["time"]) <= until + 1e-12]
     t = [float(r["time"]) for r in rows]
     dt = [float(r["time_step"]) for r in rows]
     after = [i for i in range(len(rows)) if t[i] > args.start_up]
     weight = sum(dt[i] for i in after) or float("nan")
+    summary["mean_fi"] = sum(float(rows[i]["fluidization_index"]) * dt[i] for i in after) / weight
+    summary["end"] = t[-1]
+    if not summary["finished"]:  # still running or stopped: wall time from the file times
+        wall = os.path.getmtime(os.path.join(folder, "monitors.csv")) - os.path.getmtime(os.path.join(work, name + ".prm"))
+        summary["per_second"] = wall / t[-1]
+        summary["wall"], summary["steps"] = wall, len(rows) - 1
     summary["cells"] = sum(int(r["active_cells"]) * dt[i] for i, r in enumerate(rows) if i in after) / weight
     summary["bed_height"] = sum(float(rows[i]["bed_height"]) * dt[i] for i in after) / weight
     log_text = open(log).read()
@@ -70,14 +80,16 @@ json.dump(results, open(os.path.join(work, "results.json"), "w"), indent=1)
 finest = results.get(f"uniform_{L + 2}")
 lines = [f"Command: `python3 benchmarks/amr_vs_uniform.py --end-time {args.end_time} --start-up {args.start_up} "
          f"--level {L} --jobs {args.jobs}` (serial runs, {args.jobs} at a time on this 2-core machine). "
-         f"Means over t > {args.start_up} s; errors against the finest uniform run (level {L + 2}).", "",
+         f"Means over {args.start_up} s < t ≤ {args.until or args.end_time} s; errors against the finest uniform run "
+         f"(level {L + 2}); a run that had not reached the end time is costed from its file times.", "",
          "| run | cells (mean) | steps (rejected) | wall s | s per simulated s | FI mean | FI error | bed height (m) | "
          "height error | α_s range | mass drift |", "|" + "---|" * 11]
 for name, s in results.items():
     fi_error = abs(s["mean_fi"] / finest["mean_fi"] - 1) if finest else float("nan")
     h_error = abs(s["bed_height"] / finest["bed_height"] - 1) if finest else float("nan")
     s["fi_error"], s["height_error"] = fi_error, h_error
-    lines.append(f"| {name} | {s['cells']:.0f} | {s['steps']} ({s['rejected']}) | {s['wall']:.0f} | {s['per_second']:.0f} | "
+    label = name if s["finished"] else f"{name} (to {s['end']:.3f} s)"
+    lines.append(f"| {label} | {s['cells']:.0f} | {s['steps']} ({s['rejected']}) | {s['wall']:.0f} | {s['per_second']:.0f} | "
                  f"{s['mean_fi']:.4f} | {100 * fi_error:.2f}% | {s['bed_height']:.4f} | {100 * h_error:.2f}% | "
                  f"[{s['alpha_min']:.1e}, {s['alpha_max']:.4f}] | {s['drift']:.1e} |")
 if finest and "amr" in results:
