@@ -149,12 +149,13 @@ void TwoFluidSolver<dim>::adapt_mesh ()
   // the nodes of the coarsened cells, where the coarsening deficit is given back
   std::vector<bool>                    candidate (alpha.locally_owned_size (), false);
   std::vector<types::global_dof_index> dofs (alpha_fe.n_dofs_per_cell ());
+  const IndexSet                       owned = alpha.locally_owned_elements ();
   for (const auto &cell : alpha_dof_handler.active_cell_iterators ())
     if (!cell->is_artificial () && coarsened.count (cell->id ().to_string ()))
     {
       cell->get_dof_indices (dofs);
       for (const auto dof : dofs)
-        if (alpha.locally_owned_elements ().is_element (dof))
+        if (owned.is_element (dof))
           candidate[alpha.get_partitioner ()->global_to_local (dof)] = true;
     }
   for (unsigned int k = 0; k < 3; ++k)
