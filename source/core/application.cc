@@ -2,6 +2,7 @@
 #include <wetbed/core/input_error.h>
 #include <wetbed/core/parameters.h>
 #include <wetbed/postprocess/closure_table.h>
+#include <wetbed/postprocess/spectrum.h>
 #include <wetbed/solvers/two_fluid_solver.h>
 
 #include <deal.II/base/mpi.h>
@@ -28,10 +29,56 @@ void print_usage (std::ostream &out)
          "the\n"
          "                                 points (CSV on stdout; FILE rows: alpha_s "
          "theta shear_rate)\n"
+         "  wetbed spectrum MONITORS.csv [--start T] [--segments K] [--columns A,B]\n"
+         "                                 Welch spectra of monitors.csv columns (CSV "
+         "on\n"
+         "                                 stdout; default: pressure_drop and the "
+         "planes)\n"
          "  wetbed --help                  this text\n\n"
          "Results go to `output/folder` of the case: parameters.prm, monitors.csv,\n"
          "fields_*.pvtu. Exit status: 0 done, 1 usage, 2 bad input, 3 run failed,\n"
          "4 stopped by SIGTERM/SIGINT after writing a checkpoint.\n";
+}
+
+/** `wetbed spectrum MONITORS.csv [--start T] [--segments K] [--columns A,B]`. */
+int spectrum_command (const std::vector<std::string> &arguments)
+{
+  double                   start    = 0;
+  unsigned int             segments = 4;
+  std::vector<std::string> columns;
+  for (std::size_t i = 1; i < arguments.size (); i += 2)
+  {
+    const std::string &option = arguments[i];
+    if (i + 1 >= arguments.size ())
+      throw InputError ("spectrum " + option, "needs a value");
+    const std::string &value = arguments[i + 1];
+    try
+    {
+      if (option == "--start")
+        start = std::stod (value);
+      else if (option == "--segments")
+        segments = std::stoul (value);
+      else if (option == "--columns")
+        columns = dealii::Utilities::split_string_list (value);
+      else
+        throw InputError ("spectrum " + option,
+                          "unknown option (--start, --segments, --columns)");
+    }
+    catch (const std::logic_error &)
+    {
+      throw InputError ("spectrum " + option, "'" + value + "' is not a number");
+    }
+  }
+  require (segments >= 1, "spectrum --segments", "must be >= 1");
+  try
+  {
+    write_monitor_spectra (arguments[0], columns, start, segments, std::cout);
+  }
+  catch (const std::invalid_argument &e)
+  {
+    throw InputError ("spectrum " + arguments[0], e.what ());
+  }
+  return 0;
 }
 
 /** Runs the case; returns the exit status (0 finished, 4 stopped by a signal). */
@@ -63,6 +110,19 @@ int run_application (int argc, char **argv)
       if (root)
         write_closure_table (parameters, points, std::cout);
       return 0;
+    }
+    catch (const InputError &e)
+    {
+      if (root)
+        std::cerr << "wetbed: error: " << e.what () << std::endl;
+      return 2;
+    }
+  }
+  if (argc >= 3 && std::string (argv[1]) == "spectrum")
+  {
+    try
+    {
+      return spectrum_command (std::vector<std::string> (argv + 2, argv + argc));
     }
     catch (const InputError &e)
     {

@@ -539,6 +539,8 @@ void Parameters::declare_parameters (ParameterHandler &prm)
   OutputParameters::declare_parameters (prm);
   CheckpointParameters::declare_parameters (prm);
   AdaptiveRefinementParameters::declare_parameters (prm);
+  BubbleAnalysisParameters::declare_parameters (prm);
+  SpectrumParameters::declare_parameters (prm);
 }
 
 void Parameters::parse_parameters (ParameterHandler &prm)
@@ -568,6 +570,8 @@ void Parameters::parse_parameters (ParameterHandler &prm)
   output.parse_parameters (prm);
   checkpoint.parse_parameters (prm);
   adaptive_refinement.parse_parameters (prm, mesh.initial_refinement);
+  bubble_analysis.parse_parameters (prm);
+  spectrum.parse_parameters (prm);
 }
 
 unsigned int Parameters::read_dimension (const std::string &filename)

@@ -1,8 +1,12 @@
+#include <wetbed/postprocess/spectrum.h>
 #include <wetbed/solvers/two_fluid_solver.h>
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/numerics/vector_tools.h>
+
+#include <fstream>
+#include <sstream>
 
 namespace wetbed
 {
@@ -226,6 +230,64 @@ MonitorRow TwoFluidSolver<dim>::evaluate_monitors () const
   return row;
 }
 
+template <int dim>
+void TwoFluidSolver<dim>::make_bubble_analysis ()
+{
+  BubbleCriteria criteria;
+  criteria.gas_fraction_threshold = parameters.bubble_analysis.gas_fraction_threshold;
+  criteria.minimum_diameter       = parameters.bubble_analysis.minimum_diameter;
+  criteria.freeboard_boundaries   = {boundary_ids.outlet};
+  criteria.open_boundaries        = {boundary_ids.inlet, boundary_ids.outlet};
+  unsigned int vertical           = 0; // the axis gravity points along
+  for (unsigned int d = 1; d < dim; ++d)
+    if (std::abs (parameters.physical.gravity[d]) >
+        std::abs (parameters.physical.gravity[vertical]))
+      vertical = d;
+  bubble_analysis = std::make_unique<BubbleAnalysis<dim>> (
+      parameters.bubble_analysis, criteria, triangulation, vertical, communicator);
+}
+
+template <int dim>
+void TwoFluidSolver<dim>::analyse_bubbles ()
+{
+  if (!parameters.bubble_analysis.enabled ||
+      step_number % parameters.bubble_analysis.interval != 0)
+    return;
+  TimerOutput::Scope scope (timer, "bubble analysis");
+  alpha.update_ghost_values ();
+  bubble_analysis->analyse (step_number, time, mapping, alpha_dof_handler, alpha);
+}
+
+template <int dim>
+void TwoFluidSolver<dim>::write_spectra () const
+{
+  const auto &sp = parameters.spectrum;
+  if (!sp.enabled || time <= sp.start_time ||
+      Utilities::MPI::this_mpi_process (communicator) != 0)
+    return;
+  const std::string folder = parameters.output.folder;
+  try
+  {
+    std::ostringstream table;
+    write_monitor_spectra (
+        folder + "/monitors.csv", {}, sp.start_time, sp.segments, table);
+    std::ofstream (folder + "/spectrum.csv") << table.str ();
+    std::istringstream lines (table.str ());
+    for (std::string line; std::getline (lines, line) && line[0] == '#';)
+      pcout << "Spectrum " << line.substr (2) << std::endl;
+  }
+  catch (const std::invalid_argument &e) // too few samples: the run is too short
+  {
+    pcout << "Spectrum: not written (" << e.what () << ")" << std::endl;
+  }
+}
+
 template MonitorRow TwoFluidSolver<2>::evaluate_monitors () const;
 template MonitorRow TwoFluidSolver<3>::evaluate_monitors () const;
+template void       TwoFluidSolver<2>::make_bubble_analysis ();
+template void       TwoFluidSolver<3>::make_bubble_analysis ();
+template void       TwoFluidSolver<2>::analyse_bubbles ();
+template void       TwoFluidSolver<3>::analyse_bubbles ();
+template void       TwoFluidSolver<2>::write_spectra () const;
+template void       TwoFluidSolver<3>::write_spectra () const;
 } // namespace wetbed

@@ -1,3 +1,4 @@
+#include <wetbed/postprocess/csv_append.h>
 #include <wetbed/postprocess/monitors.h>
 
 #include <filesystem>
@@ -30,13 +31,7 @@ void Monitors::reopen (const std::string       &filename,
 {
   if (!write)
     return;
-  std::error_code error;
-  const auto      size = std::filesystem::file_size (filename, error);
-  if (error || size < bytes)
-    throw std::runtime_error ("checkpoint/resume: " + filename +
-                              " is shorter than when the checkpoint was written");
-  std::filesystem::resize_file (filename, bytes);
-  file.open (filename, std::ios::app);
+  continue_csv (file, filename, bytes);
 }
 
 unsigned long long Monitors::bytes_written ()

@@ -142,9 +142,11 @@ void TwoFluidSolver<dim>::adapt_mesh ()
   for (unsigned int k = 0; k < 3; ++k)
     masses[k] = solids_mass (*scalars[k]);
 
+  bubble_analysis->prepare_for_mesh_change ();
   triangulation.execute_coarsening_and_refinement ();
   setup_dofs ();
   receive_fields (transfers, false);
+  bubble_analysis->after_mesh_change ();
 
   // the nodes of the coarsened cells, where the coarsening deficit is given back
   std::vector<bool>                    candidate (alpha.locally_owned_size (), false);

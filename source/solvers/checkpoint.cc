@@ -30,7 +30,7 @@ using namespace dealii;
 
 namespace
 {
-constexpr unsigned int checkpoint_format = 1;
+constexpr unsigned int checkpoint_format = 2;
 
 /** Everything a resumed run needs besides the mesh and the fields. */
 struct CheckpointState
@@ -44,15 +44,16 @@ struct CheckpointState
   double                         initial_solids_mass = 0;
   unsigned long long             monitors_bytes      = 0;
   std::vector<dealii::XDMFEntry> xdmf_entries;
+  std::string                    bubble_state; // the tracker and the bubble CSV lengths
   // (name, FNV-1a hash of the contents) of every file of the saved triangulation
   std::vector<std::pair<std::string, unsigned long long>> files;
 
   template <class Archive>
   void serialize (Archive &archive, const unsigned int)
   {
-    archive &format &dimension &mesh_file &time &time_step     &previous_time_step;
-    archive &step_number &rejected_steps &next_output_time     &output_index;
-    archive &initial_solids_mass &monitors_bytes &xdmf_entries &files;
+    archive &format &dimension &mesh_file &time &time_step &previous_time_step;
+    archive &step_number &rejected_steps &next_output_time &output_index;
+    archive &initial_solids_mass &monitors_bytes &xdmf_entries &bubble_state &files;
   }
 };
 
@@ -118,6 +119,7 @@ void TwoFluidSolver<dim>::write_checkpoint ()
       alpha_dof_handler);
   scalar_transfer.prepare_for_serialization (std::vector<const AlphaVector *>{
       &alpha, &alpha_old, &alpha_old2, &theta, &theta_old, &theta_old2});
+  bubble_analysis->prepare_for_serialization ();
   triangulation.save (partial + "/triangulation");
 
   CheckpointState state;
@@ -133,6 +135,7 @@ void TwoFluidSolver<dim>::write_checkpoint ()
   state.initial_solids_mass = initial_solids_mass;
   state.monitors_bytes      = monitors.bytes_written ();
   state.xdmf_entries        = xdmf_entries;
+  state.bubble_state        = bubble_analysis->saved_state ();
   MPI_Barrier (communicator);
   if (root)
   {
@@ -214,6 +217,7 @@ void TwoFluidSolver<dim>::resume_from_checkpoint ()
                                  output,
                                  parameters.physical.gravity,
                                  triangulation);
+  make_bubble_analysis ();
   try
   {
     triangulation.load (folder + "/triangulation");
@@ -232,6 +236,7 @@ void TwoFluidSolver<dim>::resume_from_checkpoint ()
                              std::make_unique<ScalarTransfer> (alpha_dof_handler)};
     receive_fields (transfers, true);
   }
+  bubble_analysis->deserialize ();
 
   time                = state.time;
   time_step           = state.time_step;
@@ -248,6 +253,7 @@ void TwoFluidSolver<dim>::resume_from_checkpoint ()
                    Utilities::MPI::this_mpi_process (communicator) == 0,
                    state.monitors_bytes);
   monitors.restore (evaluate_monitors ());
+  bubble_analysis->restore_state (state.bubble_state, output);
   resumed = true;
   pcout << "Resumed from " << folder << " at t = " << time << " (step " << step_number
         << ")" << std::endl;

@@ -106,6 +106,7 @@ void TwoFluidSolver<dim>::initialize ()
                                    folder,
                                    parameters.physical.gravity,
                                    triangulation);
+    make_bubble_analysis ();
     setup_dofs ();
     set_initial_state ();
     // resolve the initial bed surface: adapt, then impose the initial state anew
@@ -118,6 +119,7 @@ void TwoFluidSolver<dim>::initialize ()
     monitors.open (folder + "/monitors.csv",
                    Utilities::MPI::this_mpi_process (communicator) == 0,
                    parameters.output.probe_heights);
+    bubble_analysis->open (folder);
   }
   if (parameters.checkpoint.on_signal)
     catch_stop_signals ();
@@ -609,6 +611,7 @@ typename TwoFluidSolver<dim>::RunEnd TwoFluidSolver<dim>::run ()
       MonitorRow         row = evaluate_monitors ();
       monitors.add (row);
     }
+    analyse_bubbles ();
     if (parameters.output.field_interval >= 0)
       write_fields ();
   }
@@ -622,6 +625,7 @@ typename TwoFluidSolver<dim>::RunEnd TwoFluidSolver<dim>::run ()
       adapt_mesh ();
       time_step = next_time_step (previous_time_step); // the CFL of the new mesh
     }
+    analyse_bubbles ();
     if (checkpoint.interval > 0 && step_number % checkpoint.interval == 0)
       write_checkpoint ();
     if (checkpoint.on_signal && stop_requested (communicator))
@@ -667,6 +671,7 @@ typename TwoFluidSolver<dim>::RunEnd TwoFluidSolver<dim>::run ()
         << " cells at the end); velocity AMG builds " << preconditioner->velocity_builds
         << std::endl;
   timer.print_wall_time_statistics (communicator);
+  write_spectra ();
   return RunEnd::finished;
 }
 

@@ -3,8 +3,10 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/tensor.h>
 #include <wetbed/core/adaptive_refinement_parameters.h>
+#include <wetbed/core/bubble_analysis_parameters.h>
 #include <wetbed/core/checkpoint_parameters.h>
 #include <wetbed/core/kinetic_theory_parameters.h>
+#include <wetbed/core/spectrum_parameters.h>
 #include <wetbed/core/wet_particle_parameters.h>
 
 #include <string>
@@ -149,6 +151,8 @@ struct Parameters
   OutputParameters             output;
   CheckpointParameters         checkpoint;
   AdaptiveRefinementParameters adaptive_refinement;
+  BubbleAnalysisParameters     bubble_analysis;
+  SpectrumParameters           spectrum;
   bool                         stabilization; // SUPG + outlet backflow terms
   std::string                  parameter_file_directory;
 

@@ -8,6 +8,7 @@
 #include <wetbed/core/parameters.h>
 #include <wetbed/core/time_integration.h>
 #include <wetbed/mesh/mesh_input.h>
+#include <wetbed/postprocess/bubble_analysis.h>
 #include <wetbed/postprocess/monitors.h>
 #include <wetbed/solvers/block_preconditioner.h>
 
@@ -156,7 +157,15 @@ private:
 
   // postprocessing (source/postprocess/)
   MonitorRow evaluate_monitors () const;
-  void       write_fields () const;
+  /** The bubble analysis of this mesh (its boundary ids), made right after the mesh is
+   * read. */
+  void make_bubble_analysis ();
+  /** Detects and tracks bubbles if enabled and due at this step. */
+  void analyse_bubbles ();
+  /** spectrum.csv from monitors.csv, at the end of a run that lasted past the spectrum
+   * start time (rank 0). */
+  void write_spectra () const;
+  void write_fields () const;
 
   /** The cause of the last rejection and where the failed state is extreme
    * (source/solvers/failure_report.cc); collective. */
@@ -212,8 +221,9 @@ private:
   dealii::TrilinosWrappers::SparseMatrix granular_energy_matrix; // PDE model only
   GranularEnergyBudget                   granular_energy_budget; // of the last update
 
-  Monitors     monitors;
-  double       time, time_step, previous_time_step;
+  Monitors                             monitors;
+  std::unique_ptr<BubbleAnalysis<dim>> bubble_analysis;
+  double                               time, time_step, previous_time_step;
   unsigned int step_number, rejected_steps, last_krylov_iterations;
   double       next_output_time;
   unsigned int output_index;
