@@ -200,10 +200,63 @@ elif check == "ranks":
     expect(all(abs(a["solids_mass"] - b["solids_mass"]) <= 1e-12 * a["solids_mass"] for a, b in zip(one, two)), "solids mass identical")
 elif check == "bubbling":
     # the default case, first 0.05 s: runs, bounded, conservative, the bed lifts
-    rows = run("bubbling_bed_2d", "subsection time stepping\n set end time = 0.05\nend\n")
+    rows = run("bubbling_bed_2d", "subsection time stepping\n set end time = 0.05\nend\n"
+               "subsection bed monitors\n set pressure drop between = 0.01, 0.1\n"
+               " set point probes = 0.025, 0.03; 0.025, 0.2\nend\n")
     bounds_and_mass(rows, 0.61, 1e-10)
+    # bed monitors: the initial bed (5 cm at 0.58) has its surface within a cell of 5 cm;
+    # the probe in the bed reads 0.58, the one in the freeboard 0; the pressure drop
+    # between 1 and 10 cm is most of the inlet-outlet drop (the bed starts above 1 cm)
+    first, last = rows[0], rows[-1]
+    expect(abs(first["bed_surface_height"] - 0.05) <= 0.006 and abs(first["expansion_ratio"] - first["bed_surface_height"] / 0.05) < 1e-12,
+           f"initial bed surface {first['bed_surface_height']:.4f} m, expansion ratio {first['expansion_ratio']:.3f}")
+    expect(abs(first["probe_0_alpha_s"] - 0.58) < 1e-12 and first["probe_1_alpha_s"] == 0, "point probes: 0.58 in the bed, 0 above it")
+    expect(last["expansion_ratio"] > 1.05, f"the bed expands (ratio {last['expansion_ratio']:.3f})")
+    ratio = last["pressure_drop_0.01_0.1"] / last["pressure_drop"]
+    expect(0.7 < ratio < 1.01, f"pressure drop between 1 and 10 cm: {ratio:.3f} of the inlet-outlet drop")
     expect(rows[-1]["time"] >= 0.05 - 1e-12, "reached t = 0.05 s")
     expect(max(r["fluidization_index"] for r in rows[1:]) > 1.0, "the gas carries the bed (FI > 1 at start-up)")
+elif check == "bubbles":
+    # the bubble analysis on the default case over the start-up bubble (0.06 s): bubbles.csv,
+    # bubble_summary.csv and the spectrum CLI; a run resumed from a checkpoint at step 40
+    # continues the bubble files and the tracks as if uninterrupted (1 rank: the same
+    # rows; 1 -> 2 ranks: the same bubbles and tracks)
+    import shutil
+    overrides = ("subsection time stepping\n set end time = 0.06\nend\n"
+                 "subsection checkpoint\n set interval = 40\n set at end = false\nend\n"
+                 "subsection bubble analysis\n set interval = 5\nend\n")
+    folder = os.path.join(work, "bubbles")
+    rows = run("bubbling_bed_2d", overrides, 1, folder)
+
+    def read(name, where):
+        return list(csv.DictReader(open(os.path.join(where, name))))
+    bubbles, summary = read("bubbles.csv", folder), read("bubble_summary.csv", folder)
+    steps = int(rows[-1]["step"])
+    expect(len(summary) == steps // 5 + 1, f"bubble_summary.csv: a row every 5 steps ({len(summary)} rows, {steps} steps)")
+    expect(len(bubbles) >= 3 and all(int(r["cells"]) > 0 for r in bubbles), f"the start-up bubble is found ({len(bubbles)} rows)")
+    last = bubbles[-1]
+    expect(0.01 < float(last["equivalent_diameter"]) < 0.05 and float(last["touches_wall"]) == 1,
+           f"the start-up bubble: diameter {float(last['equivalent_diameter']):.4f} m, spans the 5 cm slice")
+    rising = [float(r["rise_velocity"]) for r in bubbles if r["rise_velocity"] != ""]
+    expect(rising and all(0 <= v < 2 for v in rising) and max(rising) > 0, f"rise velocities in [0, 2) m/s, not all 0: {rising[:3]}...")
+    p = subprocess.run([wetbed, "spectrum", os.path.join(folder, "monitors.csv"), "--start", "0.01"],
+                       capture_output=True, text=True, env=env)
+    expect(p.returncode == 0 and p.stdout.startswith("# pressure_drop: dominant frequency"),
+           f"wetbed spectrum on monitors.csv (exit {p.returncode}): {p.stdout.splitlines()[:1]}")
+    for ranks in (1, 2):
+        resumed = os.path.join(work, f"bubbles_resumed_{ranks}")
+        shutil.rmtree(resumed, ignore_errors=True)
+        shutil.copytree(folder, resumed)
+        # the files as they were at the checkpoint's end would be cut back anyway
+        run("bubbling_bed_2d", overrides, ranks, resumed, resume=True)
+        again = read("bubbles.csv", resumed)
+        same_rows = len(again) == len(bubbles) and all(
+            a["step"] == b["step"] and a["track"] == b["track"] for a, b in zip(bubbles, again))
+        expect(same_rows, f"resumed on {ranks} rank(s): the same bubble rows and tracks ({len(again)} vs {len(bubbles)})")
+        worst = max(abs(float(a["volume"]) - float(b["volume"])) / float(a["volume"]) for a, b in zip(bubbles, again))
+        expect(worst <= (1e-9 if ranks == 1 else 0.05), f"resumed on {ranks} rank(s): bubble volumes agree (max rel. difference {worst:.1e})")
+        expect(read("bubble_summary.csv", resumed)[-1]["splittings"] == summary[-1]["splittings"],
+               f"resumed on {ranks} rank(s): the same splitting count")
 elif check == "hdf5":
     # parallel HDF5 + XDMF output on 2 ranks: the XDMF index and the datasets agree
     try:

@@ -105,6 +105,12 @@ cases = [
     ("resume without a checkpoint", f"subsection checkpoint\n set resume = true\nend\nsubsection output\n set folder = {os.path.join(work, 'never_run')}\nend", "checkpoint/resume"),
     ("resume from a damaged checkpoint", "damaged checkpoint", "checkpoint/resume"),
     ("resume from a garbage checkpoint state", "garbage checkpoint", "checkpoint/resume"),
+    ("bubble gas threshold above 1", "subsection bubble analysis\n set gas fraction threshold = 1.5\nend", "gas fraction threshold"),
+    ("bubble analysis every 0 steps", "subsection bubble analysis\n set interval = 0\nend", "interval"),
+    ("pressure drop with one plane", "subsection bed monitors\n set pressure drop between = 0.05\nend", "bed monitors/pressure drop between"),
+    ("3D point probe in a 2D case", "subsection bed monitors\n set point probes = 0.01, 0.02, 0.03\nend", "bed monitors/point probes"),
+    ("point probe not a number", "subsection bed monitors\n set point probes = 0.01, high\nend", "bed monitors/point probes"),
+    ("zero Welch segments", "subsection spectrum\n set segments = 0\nend", "segments"),
     ("unwritable output folder", "subsection output\n set folder = /proc/wetbed-output\nend", "output/folder"),
 ]
 corrupt = os.path.join(work, "corrupt.msh")
@@ -160,9 +166,17 @@ for args, expected in ((["--alpha-s", "0.3,x"], "--alpha-s"), (["--theta", "-1"]
     if p.returncode != 2 or expected not in p.stderr:
         failures.append(f"wetbed closures {' '.join(args)}: exit {p.returncode}, '{p.stderr.strip()}'")
 
+# 5. wetbed spectrum: bad files and options exit 2 naming them
+for args, expected in (([monitors, "--columns", "colour"], "colour"), (["/nonexistent.csv"], "/nonexistent.csv"),
+                       ([monitors, "--start", "soon"], "--start"), ([monitors, "--segments", "0"], "--segments"),
+                       ([monitors, "--start", "1e9"], "fewer than 16 samples")):
+    p = subprocess.run([wetbed, "spectrum"] + args, capture_output=True, text=True)
+    if p.returncode != 2 or expected not in p.stderr:
+        failures.append(f"wetbed spectrum {' '.join(args)}: exit {p.returncode}, '{p.stderr.strip()}'")
+
 n = len(cases)
 print(f"{n} bad-input cases checked")
 for f in failures:
     print("FAILED:", f)
-print(f"{n + 9 - len(failures)} passed, {len(failures)} failed")
+print(f"{n + 14 - len(failures)} passed, {len(failures)} failed")
 sys.exit(1 if failures else 0)

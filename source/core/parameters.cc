@@ -541,6 +541,7 @@ void Parameters::declare_parameters (ParameterHandler &prm)
   AdaptiveRefinementParameters::declare_parameters (prm);
   BubbleAnalysisParameters::declare_parameters (prm);
   SpectrumParameters::declare_parameters (prm);
+  BedMonitorParameters::declare_parameters (prm);
 }
 
 void Parameters::parse_parameters (ParameterHandler &prm)
@@ -572,6 +573,7 @@ void Parameters::parse_parameters (ParameterHandler &prm)
   adaptive_refinement.parse_parameters (prm, mesh.initial_refinement);
   bubble_analysis.parse_parameters (prm);
   spectrum.parse_parameters (prm);
+  bed_monitors.parse_parameters (prm, dimension);
 }
 
 unsigned int Parameters::read_dimension (const std::string &filename)

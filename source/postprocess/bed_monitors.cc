@@ -172,48 +172,7 @@ MonitorRow TwoFluidSolver<dim>::evaluate_monitors () const
         weight > 0 ? Utilities::MPI::sum (weighted, communicator) / weight : 0;
     row.granular_energy = granular_energy_budget;
   }
-  const auto &heights = parameters.output.probe_heights;
-  if (!heights.empty ())
-  {
-    const QGauss<dim> quadrature (2);
-    FEValues<dim>     values (
-        mapping, alpha_fe, quadrature, update_values | update_JxW_values);
-    std::vector<double> a_q (quadrature.size ()), integral (heights.size (), 0.0),
-        volume (heights.size (), 0.0);
-    for (const auto &cell : alpha_dof_handler.active_cell_iterators ())
-      if (cell->is_locally_owned ())
-      {
-        double lowest = std::numeric_limits<double>::max (), highest = -lowest;
-        for (const unsigned int v : cell->vertex_indices ())
-        {
-          lowest  = std::min (lowest, cell->vertex (v) * up);
-          highest = std::max (highest, cell->vertex (v) * up);
-        }
-        bool evaluated = false;
-        for (unsigned int k = 0; k < heights.size (); ++k)
-          if (lowest <= heights[k] && heights[k] < highest)
-          {
-            if (!evaluated)
-            {
-              values.reinit (cell);
-              values.get_function_values (alpha, a_q);
-              evaluated = true;
-            }
-            for (unsigned int q = 0; q < quadrature.size (); ++q)
-            {
-              integral[k] += a_q[q] * values.JxW (q);
-              volume[k] += values.JxW (q);
-            }
-          }
-      }
-    row.plane_alpha.resize (heights.size ());
-    for (unsigned int k = 0; k < heights.size (); ++k)
-    {
-      const double v = Utilities::MPI::sum (volume[k], communicator);
-      row.plane_alpha[k] =
-          v > 0 ? Utilities::MPI::sum (integral[k], communicator) / v : 0;
-    }
-  }
+  evaluate_bed_profile (row);
   double total = 0;
   for (const auto &hm : merged)
     total += hm.second;

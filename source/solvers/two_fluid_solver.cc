@@ -116,9 +116,12 @@ void TwoFluidSolver<dim>::initialize ()
         adapt_mesh ();
         set_initial_state ();
       }
-    monitors.open (folder + "/monitors.csv",
-                   Utilities::MPI::this_mpi_process (communicator) == 0,
-                   parameters.output.probe_heights);
+    monitors.open (
+        folder + "/monitors.csv",
+        Utilities::MPI::this_mpi_process (communicator) == 0,
+        {parameters.output.probe_heights,
+         parameters.bed_monitors.pressure_drop_planes,
+         static_cast<unsigned int> (parameters.bed_monitors.point_probes.size ())});
     bubble_analysis->open (folder);
   }
   if (parameters.checkpoint.on_signal)

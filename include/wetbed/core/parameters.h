@@ -3,6 +3,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/tensor.h>
 #include <wetbed/core/adaptive_refinement_parameters.h>
+#include <wetbed/core/bed_monitor_parameters.h>
 #include <wetbed/core/bubble_analysis_parameters.h>
 #include <wetbed/core/checkpoint_parameters.h>
 #include <wetbed/core/kinetic_theory_parameters.h>
@@ -153,6 +154,7 @@ struct Parameters
   AdaptiveRefinementParameters adaptive_refinement;
   BubbleAnalysisParameters     bubble_analysis;
   SpectrumParameters           spectrum;
+  BedMonitorParameters         bed_monitors;
   bool                         stabilization; // SUPG + outlet backflow terms
   std::string                  parameter_file_directory;
 

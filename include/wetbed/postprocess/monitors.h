@@ -38,16 +38,27 @@ struct MonitorRow
   GranularEnergyBudget granular_energy;
   std::vector<double>  plane_alpha;      // alpha_s averaged over the probe cell layers
   unsigned long long   active_cells = 0; // of the (adapted) mesh
+  // bed monitors (subsection bed monitors)
+  // layer-averaged p' at the first plane minus the second (one entry, or none)
+  std::vector<double> plane_pressure_drop;
+  double bed_surface_height = 0; // top of the highest slice with mean alpha_s above
+  double expansion_ratio    = 0; // bed_surface_height / initial bed height
+  std::vector<double> probe_alpha, probe_pressure; // at the point probes
+};
+
+/** The optional columns of monitors.csv. */
+struct MonitorColumns
+{
+  std::vector<double> probe_heights;        // alpha_s_plane_<height>
+  std::vector<double> pressure_drop_planes; // pressure_drop_<a>_<b> (two heights or none)
+  unsigned int        point_probes = 0;     // probe_<i>_alpha_s, probe_<i>_pressure
 };
 
 /** Collects MonitorRows and writes them (rank 0) to a CSV file. */
 class Monitors
 {
 public:
-  /** probe_heights name the alpha_s_plane_<height> columns. */
-  void open (const std::string         &filename,
-             bool                       write,
-             const std::vector<double> &probe_heights = {});
+  void open (const std::string &filename, bool write, const MonitorColumns &columns = {});
   /** Continues `filename` of a resumed run: cut back to its first `bytes` (the rows up
    * to the checkpoint) and appended to from there. */
   void reopen (const std::string &filename, bool write, unsigned long long bytes);

@@ -157,6 +157,8 @@ private:
 
   // postprocessing (source/postprocess/)
   MonitorRow evaluate_monitors () const;
+  /** Plane averages, bed surface, point probes (source/postprocess/bed_profile.cc). */
+  void evaluate_bed_profile (MonitorRow &row) const;
   /** The bubble analysis of this mesh (its boundary ids), made right after the mesh is
    * read. */
   void make_bubble_analysis ();
