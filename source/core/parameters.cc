@@ -414,12 +414,20 @@ void LinearSolverParameters::declare_parameters (ParameterHandler &prm)
   prm.declare_entry (
       "velocity smoother",
       "Chebyshev",
-      Selection ("Chebyshev|ILU"),
+      Selection ("Chebyshev|ILU|block Gauss-Seidel"),
       "ML smoother on the two-velocity block. Chebyshev (default): more "
       "FGMRES iterations than ILU but cheaper ones (2D bed start-up 29 vs "
       "51 per solve, 3D column start-up 145 s vs 229 s); ILU sees the drag "
       "coupling of the two velocities inside a node.");
   prm.declare_entry ("smoother sweeps", "2", Integer (1, 10), "ML smoother sweeps.");
+  prm.declare_entry ("inner solves",
+                     "V-cycle",
+                     Selection ("V-cycle|exact"),
+                     "V-cycle: one AMG V-cycle per block (the product). exact: the "
+                     "velocity block by a sparse direct solver (Amesos KLU) and the "
+                     "pressure Schur approximation by CG to 1e-10, to tell how many "
+                     "FGMRES iterations the Schur approximation itself costs (slow; "
+                     "for diagnosis, see benchmarks/solver_diagnosis.py).");
   prm.declare_entry (
       "aggregation threshold", "1e-4", Double (0, 1), "ML aggregation threshold.");
   prm.declare_entry ("rebuild growth",
@@ -449,6 +457,7 @@ void LinearSolverParameters::parse_parameters (ParameterHandler &prm)
   restart               = prm.get_integer ("restart");
   smoother              = prm.get ("velocity smoother");
   smoother_sweeps       = prm.get_integer ("smoother sweeps");
+  inner_solves          = prm.get ("inner solves");
   aggregation_threshold = prm.get_double ("aggregation threshold");
   rebuild_growth        = prm.get_double ("rebuild growth");
   rebuild_interval      = prm.get_integer ("rebuild interval");

@@ -6,6 +6,7 @@ namespace wetbed
 {
 BlockPreconditioner::BlockPreconditioner (const LinearSolverParameters &parameters)
     : parameters (parameters)
+    , exact (parameters.inner_solves == "exact")
 {
 }
 
@@ -24,7 +25,15 @@ void BlockPreconditioner::build_velocity (
   data.set_parameters (ml, null_space, A.trilinos_matrix ());
   if (parameters.smoother == "ILU")
     ml.set ("smoother: type", "ILU");
-  velocity_amg.initialize (A, ml);
+  else if (parameters.smoother == "block Gauss-Seidel")
+    ml.set ("smoother: type", "symmetric block Gauss-Seidel");
+  if (exact)
+  {
+    velocity_direct = std::make_unique<dealii::TrilinosWrappers::SolverDirect> (direct_control);
+    velocity_direct->initialize (A);
+  }
+  else
+    velocity_amg.initialize (A, ml);
   velocity_tmp.reinit (A.locally_owned_range_indices (), A.get_mpi_communicator ());
   ++velocity_builds;
 }
@@ -35,17 +44,29 @@ void BlockPreconditioner::build_schur (const dealii::TrilinosWrappers::SparseMat
   data.elliptic        = true;
   data.smoother_sweeps = 2;
   schur_amg.initialize (L, data);
+  schur = &L;
   ++schur_builds;
 }
 
 void BlockPreconditioner::vmult (BlockVector &dst, const BlockVector &src) const
 {
   // pressure: y_p = -L_c^{-1} r_p
-  schur_amg.vmult (dst.block (1), src.block (1));
+  if (exact)
+  {
+    dealii::SolverControl control (10000, 1e-10 * src.block (1).l2_norm () + 1e-300);
+    dealii::TrilinosWrappers::SolverCG cg (control);
+    dst.block (1) = 0;
+    cg.solve (*schur, dst.block (1), src.block (1), schur_amg);
+  }
+  else
+    schur_amg.vmult (dst.block (1), src.block (1));
   dst.block (1) *= -1.0;
   // velocity: y_u = A^{-1}(r_u - B^T y_p)
   gradient->vmult (velocity_tmp, dst.block (1));
   velocity_tmp.sadd (-1.0, src.block (0));
-  velocity_amg.vmult (dst.block (0), velocity_tmp);
+  if (exact)
+    velocity_direct->solve (dst.block (0), velocity_tmp);
+  else
+    velocity_amg.vmult (dst.block (0), velocity_tmp);
 }
 } // namespace wetbed

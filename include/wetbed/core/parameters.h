@@ -112,6 +112,7 @@ struct LinearSolverParameters
   double       relative_tolerance, scalar_tolerance;
   unsigned int maximum_iterations, restart;
   std::string  smoother;
+  std::string  inner_solves; // V-cycle (default) or exact (diagnosis of the iterations)
   unsigned int smoother_sweeps;
   double       aggregation_threshold;
   double       rebuild_growth; // rebuild the AMG when iterations grow by this factor

@@ -1,0 +1,81 @@
+#!/usr/bin/env python3
+"""Where the FGMRES iterations come from: the 2D bubbling bed (prm/bubbling_bed_2d.prm)
+at three uniform refinements over its first 0.01 s (serial), with the velocity AMG
+smoothed by Chebyshev (2, 4, 6 sweeps) or symmetric block Gauss-Seidel (the 2 dim
+velocity components of a node as one block: the drag coupling of u_g and u_s), and with
+exact inner solves (sparse direct velocity block, CG on the Schur approximation): the
+exact row isolates the Schur approximation, the others the velocity V-cycle. Prints and
+writes the 'solver_diagnosis' section of doc/benchmarks.md: FGMRES iterations per solve,
+their growth over two refinements, Krylov and setup time, total wall time.
+
+usage: python3 benchmarks/solver_diagnosis.py [--end-time 0.01] [--levels 0 1 2]
+(build first: bash scripts/build.sh)
+"""
+import argparse
+import csv
+import os
+import re
+import subprocess
+
+from benchmark_setup import read_case, replace_doc_section, repository_root, write_case
+
+root = repository_root()
+parser = argparse.ArgumentParser()
+parser.add_argument("--end-time", type=float, default=0.01)
+parser.add_argument("--levels", type=int, nargs="+", default=[0, 1, 2])
+args = parser.parse_args()
+work = os.path.join(root, "build", "benchmarks", "solver_diagnosis")
+os.makedirs(work, exist_ok=True)
+base = read_case("bubbling_bed_2d")
+configurations = [
+    ("Chebyshev, 2 sweeps", "set velocity smoother = Chebyshev\n set smoother sweeps = 2"),
+    ("Chebyshev, 4 sweeps", "set velocity smoother = Chebyshev\n set smoother sweeps = 4"),
+    ("Chebyshev, 6 sweeps", "set velocity smoother = Chebyshev\n set smoother sweeps = 6"),
+    ("block Gauss-Seidel, 2 sweeps", "set velocity smoother = block Gauss-Seidel\n set smoother sweeps = 2"),
+    ("exact inner solves", "set inner solves = exact"),
+]
+
+
+def seconds(text, name):
+    m = re.search(r"\| " + re.escape(name) + r"\s*\|\s*\d+\s*\|\s*([\d.e+-]+)s", text)
+    return float(m.group(1)) if m else float("nan")
+
+
+results = {}
+for label, settings in configurations:
+    for level in args.levels:
+        name = re.sub(r"[^a-z0-9]+", "_", label.lower()) + f"_L{level}"
+        sections = (f"\nsubsection mesh\n set initial refinement = {level}\nend\n"
+                    f"subsection linear solver\n {settings}\nend\n"
+                    "subsection checkpoint\n set at end = false\nend\n"
+                    "subsection bubble analysis\n set enabled = false\nend\n")
+        prm, folder, log = write_case(work, name, base, args.end_time, sections, field_interval=1000)
+        with open(log, "w") as out:
+            subprocess.run([os.path.join(root, "build", "wetbed"), prm], stdout=out, stderr=subprocess.STDOUT, check=True)
+        rows = list(csv.DictReader(open(os.path.join(folder, "monitors.csv"))))[1:]
+        text = open(log).read()
+        solves = int(re.search(r"\| Krylov solve\s*\|\s*(\d+)", text).group(1))
+        results[(label, level)] = {
+            "cells": int(rows[-1]["active_cells"]), "steps": len(rows),
+            "its": sum(float(r["krylov_iterations"]) for r in rows) / solves,
+            "krylov": seconds(text, "Krylov solve"), "setup": seconds(text, "preconditioner setup"),
+            "total": float(re.search(r"Total wallclock time elapsed\s*\|\s*([\d.e+-]+)s", text).group(1)),
+        }
+        r = results[(label, level)]
+        print(f"{label:30s} level {level}: {r['cells']:6d} cells, {r['its']:6.1f} its/solve, "
+              f"Krylov {r['krylov']:7.2f} s, setup {r['setup']:6.2f} s, total {r['total']:7.2f} s")
+
+levels = args.levels
+lines = [f"Command: `python3 benchmarks/solver_diagnosis.py --end-time {args.end_time:g}` (first {args.end_time:g} s of the",
+         "start-up, serial; iterations per FGMRES solve, including solves repeated after an",
+         "AMG rebuild).", "",
+         "| velocity preconditioner | " + " | ".join(f"its/solve L{l} ({results[(configurations[0][0], l)]['cells']} cells)" for l in levels)
+         + f" | growth L{levels[0]}→L{levels[-1]} | " + " | ".join(f"Krylov + setup s L{l}" for l in levels) + " | " + f"total s L{levels[-1]} |",
+         "|---|" + "---|" * (2 * len(levels) + 2)]
+for label, _ in configurations:
+    its = [results[(label, l)]["its"] for l in levels]
+    lines.append(f"| {label} | " + " | ".join(f"{i:.1f}" for i in its) + f" | {100 * (its[-1] / its[0] - 1):.0f}% | "
+                 + " | ".join(f"{results[(label, l)]['krylov'] + results[(label, l)]['setup']:.2f}" for l in levels)
+                 + f" | {results[(label, levels[-1])]['total']:.1f} |")
+replace_doc_section(root, "solver_diagnosis", "Where the FGMRES iterations come from (2D bed, start-up)", lines)
+print("\n".join(lines))
