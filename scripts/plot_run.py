@@ -173,6 +173,7 @@ def plot(folder, out, start, plane):
             peak = max(values[1:])
             ax.semilogy(spectrum["frequency"][1:], [v / peak for v in values[1:]], lw=0.8, label=name[4:])
         ax.set_xlim(0, 20)
+        ax.set_ylim(1e-4, 2)
         ax.set_xlabel("frequency (Hz)")
         ax.set_ylabel("power spectral density / peak")
         ax.legend()

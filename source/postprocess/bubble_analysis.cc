@@ -147,15 +147,22 @@ BubbleAnalysis<dim>::make_transfer () const
 }
 
 template <int dim>
-void BubbleAnalysis<dim>::prepare_for_mesh_change ()
+typename BubbleAnalysis<dim>::LabelTransfer &BubbleAnalysis<dim>::attach_labels ()
 {
+  // no analysis on this mesh yet: no labels
   if (previous_label.size () != triangulation.n_active_cells ())
   {
     previous_label.reinit (triangulation.n_active_cells ());
     previous_label = -1.0f;
   }
   transfer = make_transfer ();
-  transfer->prepare_for_coarsening_and_refinement (previous_label);
+  return *transfer;
+}
+
+template <int dim>
+void BubbleAnalysis<dim>::prepare_for_mesh_change ()
+{
+  attach_labels ().prepare_for_coarsening_and_refinement (previous_label);
 }
 
 template <int dim>
@@ -169,13 +176,7 @@ void BubbleAnalysis<dim>::after_mesh_change ()
 template <int dim>
 void BubbleAnalysis<dim>::prepare_for_serialization ()
 {
-  if (previous_label.size () != triangulation.n_active_cells ())
-  {
-    previous_label.reinit (triangulation.n_active_cells ());
-    previous_label = -1.0f;
-  }
-  transfer = make_transfer ();
-  transfer->prepare_for_serialization (previous_label);
+  attach_labels ().prepare_for_serialization (previous_label);
 }
 
 template <int dim>

@@ -5,8 +5,7 @@
 namespace wetbed
 {
 BlockPreconditioner::BlockPreconditioner (const LinearSolverParameters &parameters)
-    : parameters (parameters)
-    , exact (parameters.inner_solves == "exact")
+    : parameters (parameters), exact (parameters.inner_solves == "exact")
 {
 }
 
@@ -29,7 +28,8 @@ void BlockPreconditioner::build_velocity (
     ml.set ("smoother: type", "symmetric block Gauss-Seidel");
   if (exact)
   {
-    velocity_direct = std::make_unique<dealii::TrilinosWrappers::SolverDirect> (direct_control);
+    velocity_direct =
+        std::make_unique<dealii::TrilinosWrappers::SolverDirect> (direct_control);
     velocity_direct->initialize (A);
   }
   else

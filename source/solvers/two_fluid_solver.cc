@@ -605,8 +605,10 @@ typename TwoFluidSolver<dim>::RunEnd TwoFluidSolver<dim>::run ()
 {
   if (!initialized)
     initialize ();
-  const auto &ts    = parameters.time;
-  const auto  start = std::chrono::steady_clock::now ();
+  const auto        &ts         = parameters.time;
+  const auto         start      = std::chrono::steady_clock::now ();
+  const double       start_time = time; // not 0 for a resumed run
+  const unsigned int first_step = step_number;
   if (!resumed)
   {
     {
@@ -647,7 +649,7 @@ typename TwoFluidSolver<dim>::RunEnd TwoFluidSolver<dim>::run ()
       const double elapsed =
           std::chrono::duration<double> (std::chrono::steady_clock::now () - start)
               .count ();
-      const double eta = elapsed / time * (ts.end_time - time);
+      const double eta = elapsed / (time - start_time) * (ts.end_time - time);
       const auto  &row = monitors.last ();
       pcout << "step " << std::setw (6) << step_number << "  t = " << std::setw (9)
             << std::setprecision (5) << time << " s  dt = " << std::setw (9)
@@ -666,9 +668,9 @@ typename TwoFluidSolver<dim>::RunEnd TwoFluidSolver<dim>::run ()
   const double elapsed =
       std::chrono::duration<double> (std::chrono::steady_clock::now () - start).count ();
   pcout << "Finished: " << step_number << " steps (" << rejected_steps
-        << " rejected), wall " << elapsed << " s, " << elapsed / std::max (time, 1e-300)
-        << " s per simulated second, "
-        << 1e6 * elapsed / std::max (1u, step_number) /
+        << " rejected), wall " << elapsed << " s, "
+        << elapsed / std::max (time - start_time, 1e-300) << " s per simulated second, "
+        << 1e6 * elapsed / std::max (1u, step_number - first_step) /
                triangulation.n_global_active_cells ()
         << " us per cell per step (" << triangulation.n_global_active_cells ()
         << " cells at the end); velocity AMG builds " << preconditioner->velocity_builds

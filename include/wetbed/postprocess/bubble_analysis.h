@@ -61,6 +61,8 @@ private:
   using LabelTransfer =
       dealii::parallel::distributed::CellDataTransfer<dim, dim, dealii::Vector<float>>;
   std::unique_ptr<LabelTransfer> make_transfer () const;
+  /** A new transfer of previous_label (sized to the mesh, -1 if not analysed on it). */
+  LabelTransfer &attach_labels ();
 
   const BubbleAnalysisParameters                           parameters;
   const BubbleCriteria                                     criteria;

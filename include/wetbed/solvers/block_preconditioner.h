@@ -2,9 +2,9 @@
 
 #include <wetbed/core/parameters.h>
 
+#include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_block_sparse_matrix.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
-#include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
 
@@ -42,13 +42,13 @@ public:
   unsigned int velocity_builds = 0, schur_builds = 0;
 
 private:
-  const LinearSolverParameters                 &parameters;
-  dealii::TrilinosWrappers::PreconditionAMG     velocity_amg, schur_amg;
-  const dealii::TrilinosWrappers::SparseMatrix *gradient = nullptr;
-  const dealii::TrilinosWrappers::SparseMatrix *schur    = nullptr;
-  bool                                          exact    = false;
-  mutable dealii::SolverControl                 direct_control;
+  const LinearSolverParameters                                   &parameters;
+  dealii::TrilinosWrappers::PreconditionAMG                       velocity_amg, schur_amg;
+  const dealii::TrilinosWrappers::SparseMatrix                   *gradient = nullptr;
+  const dealii::TrilinosWrappers::SparseMatrix                   *schur    = nullptr;
+  bool                                                            exact    = false;
+  mutable dealii::SolverControl                                   direct_control;
   mutable std::unique_ptr<dealii::TrilinosWrappers::SolverDirect> velocity_direct;
-  mutable dealii::TrilinosWrappers::MPI::Vector velocity_tmp;
+  mutable dealii::TrilinosWrappers::MPI::Vector                   velocity_tmp;
 };
 } // namespace wetbed
