@@ -11,9 +11,11 @@ Reads monitors.csv, bubbles.csv, bubble_summary.csv, bubble_events.csv and spect
   bubble_count.png   bubble count and cumulative splitting/coalescence events vs time
   spectrum.png       power spectra of the pressure drop and the plane alpha_s
 Statistics from T on (default 1 s, the start-up left out): time-averaged FI, bed
-height, mean bubble diameter, bubble count, bubble frequency (tracks whose centroid
-rises through the plane at height H per second; default the first probe plane, else
-0.076 m), splitting and coalescence events per second, dominant frequencies.
+height, mean bubble diameter, bubble count, bubble frequency (tracks that appear wholly
+below the plane at height H and later reach into it, per second, as a measurement plane
+sees bubbles; default H: the first probe plane, else 0.076 m), the tracks whose centroid
+rises through H per second, splitting and coalescence events per second, dominant
+frequencies.
 Uses Debian's python3-matplotlib (re-executes under /usr/bin/python3 if needed)."""
 import argparse
 import csv
@@ -89,15 +91,24 @@ def statistics(folder, start=1.0, plane=None):
         diameters = [d for d, x in zip(b["equivalent_diameter"], b["time"]) if x >= start]
         s["mean_bubble_diameter"] = sum(diameters) / len(diameters) if diameters else math.nan
         s["bubble_diameters"] = diameters
-        # bubble frequency: tracks whose centroid rises through the plane, per second
-        last = {}
+        # bubble frequency: tracks that appear wholly below the plane and later reach
+        # into it (as a measurement plane sees them), per second; and tracks whose
+        # centroid rises through the plane (fewer: a bubble reaching the surface joins
+        # the freeboard, a split starts new tracks)
+        axis = vertical[-1]
+        last, born_below, counted = {}, set(), set()
         crossings = 0
-        for x, track, height in zip(b["time"], b["track"], b[vertical]):
+        for x, track, height, low, high in zip(b["time"], b["track"], b[vertical], b["lower_" + axis], b["upper_" + axis]):
+            if track not in last and high < plane:
+                born_below.add(track)
+            if track in born_below and track not in counted and low < plane < high and x >= start:
+                counted.add(track)
             if track in last and x >= start and last[track] < plane <= height:
                 crossings += 1
             last[track] = height
         if summary is not None and summary["time"][-1] > start:
-            s["bubble_frequency"] = crossings / (summary["time"][-1] - start)
+            s["bubble_frequency"] = len(counted) / (summary["time"][-1] - start)
+            s["centroid_crossings_per_second"] = crossings / (summary["time"][-1] - start)
     spectrum = os.path.join(folder, "spectrum.csv")
     if os.path.exists(spectrum):
         for line in open(spectrum):
