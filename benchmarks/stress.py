@@ -1,0 +1,126 @@
+#!/usr/bin/env python3
+"""Stress benchmark (issue 7): the 2D bubbling bed pushed to the edges of its parameters
+and scheme options, each run short (the start-up is the hardest part: the bed lifts as
+a plug and collapses) and reported as completed, stopped cleanly with a diagnostic
+(exit 3 + failure_report.txt) or crashed: rejected steps, min/max alpha_s and Theta,
+solids mass drift, cost. Writes the 'stress' section of doc/benchmarks.md.
+
+Cases: restitution e = 0.5 and 0.99; U = 1.5 and 8 U_mf (Wen-Yu U_mf of the 350 um
+beads); 100 um particles (stiff drag) at 8 of their U_mf; the wettest loading of the
+seed-000 sweep (delta = 0.138e-2, prm/wet_column_2d.prm); AMR adapting at every step
+(levels 0-2); 2 MPI ranks; and a CFL sweep: fixed time steps of 0.5, 1, 2, 4 ms with
+BDF1 and BDF2 (adaptive stepping off, rejected steps still halve dt). --long adds the
+20 s dry run (about 4 h here).
+
+usage: python3 benchmarks/stress.py [--end-time 0.2] [--jobs 2] [--long] [--only NAME ...]
+(build first: bash scripts/build.sh)
+"""
+import argparse
+import concurrent.futures
+import csv
+import math
+import os
+import re
+import subprocess
+import time
+
+from benchmark_setup import read_case, replace_doc_section, repository_root, write_case
+
+root = repository_root()
+parser = argparse.ArgumentParser()
+parser.add_argument("--end-time", type=float, default=0.2)
+parser.add_argument("--jobs", type=int, default=2)
+parser.add_argument("--long", action="store_true")
+parser.add_argument("--only", nargs="*")
+args = parser.parse_args()
+work = os.path.join(root, "build", "benchmarks", "stress")
+os.makedirs(work, exist_ok=True)
+env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+
+
+def minimum_fluidization_velocity(d, rho_s=2500.0, rho_g=1.2, mu=1.8e-5, g=9.81):
+    """Wen and Yu (1966): Re_mf = sqrt(33.7^2 + 0.0408 Ar) - 33.7."""
+    archimedes = rho_g * (rho_s - rho_g) * g * d ** 3 / mu ** 2
+    return (math.sqrt(33.7 ** 2 + 0.0408 * archimedes) - 33.7) * mu / (rho_g * d)
+
+
+u_mf = minimum_fluidization_velocity(350e-6)
+u_mf_fine = minimum_fluidization_velocity(100e-6)
+dry = read_case("bubbling_bed_2d")
+cases = [
+    ("default case", dry, "", 1),
+    ("e = 0.5", dry, "subsection kinetic theory\n set restitution coefficient = 0.5\nend\n", 1),
+    ("e = 0.99", dry, "subsection kinetic theory\n set restitution coefficient = 0.99\nend\n", 1),
+    (f"U = 1.5 U_mf ({1.5 * u_mf:.3f} m/s)", dry, f"subsection boundary conditions\n set inlet superficial velocity = {1.5 * u_mf}\nend\n", 1),
+    (f"U = 8 U_mf ({8 * u_mf:.3f} m/s)", dry, f"subsection boundary conditions\n set inlet superficial velocity = {8 * u_mf}\nend\n", 1),
+    (f"100 um, U = 8 U_mf ({8 * u_mf_fine:.4f} m/s)", dry,
+     f"subsection physical properties\n set particle diameter = 100e-6\nend\n"
+     f"subsection boundary conditions\n set inlet superficial velocity = {8 * u_mf_fine}\nend\n", 1),
+    ("wet, delta = 0.138e-2", read_case("wet_column_2d"), "subsection wet particles\n set liquid loading = 0.138e-2\nend\n", 1),
+    ("AMR every step, levels 0-2", dry,
+     "subsection adaptive refinement\n set enabled = true\n set interval = 1\n set minimum level = 0\n set maximum level = 2\nend\n", 1),
+    ("2 MPI ranks", dry, "", 2),
+]
+for order in (1, 2):
+    for dt in (0.5e-3, 1e-3, 2e-3, 4e-3):
+        cases.append((f"BDF{order}, fixed dt = {1e3 * dt:g} ms", dry,
+                      f"subsection time stepping\n set adaptive = false\n set bdf order = {order}\n"
+                      f" set initial time step = {dt}\n set maximum time step = {dt}\nend\n", 1))
+if args.long:
+    cases.append(("long dry run, 20 s", dry, "", 1))
+if args.only:
+    cases = [c for c in cases if any(o in c[0] for o in args.only)]
+
+
+def run(case):
+    label, base, sections, ranks = case
+    name = re.sub(r"[^a-z0-9]+", "_", label.lower()).strip("_")
+    end = 20.0 if label.startswith("long") else args.end_time
+    prm, folder, log = write_case(work, name, base, end, sections + "subsection checkpoint\n set at end = false\nend\n",
+                                  field_interval=1000)
+    command = [os.path.join(root, "build", "wetbed"), prm]
+    if ranks > 1:
+        command = ["mpirun", "--oversubscribe", "-np", str(ranks)] + command
+    begin = time.time()
+    with open(log, "w") as out:
+        code = subprocess.run(command, stdout=out, stderr=subprocess.STDOUT, env=env).returncode
+    wall = time.time() - begin
+    rows = list(csv.DictReader(open(os.path.join(folder, "monitors.csv")))) if os.path.exists(os.path.join(folder, "monitors.csv")) else []
+    values = lambda key: [float(r[key]) for r in rows]  # noqa: E731
+    result = {"label": label, "code": code, "wall": wall, "end": end,
+              "reached": float(rows[-1]["time"]) if rows else 0.0,
+              "steps": int(float(rows[-1]["step"])) if rows else 0,
+              "rejected": int(float(rows[-1]["rejected_steps"])) if rows else 0,
+              "alpha": (min(values("alpha_s_min")), max(values("alpha_s_max"))) if rows else (math.nan, math.nan),
+              "theta": (min(values("theta_min")), max(values("theta_max"))) if rows else (math.nan, math.nan),
+              "drift": max(abs(v) for v in values("solids_mass_drift")) if rows else math.nan,
+              "finite": all(math.isfinite(float(v)) for r in rows for v in r.values() if v != ""),
+              "report": os.path.exists(os.path.join(folder, "failure_report.txt"))}
+    if code == 0:
+        result["outcome"] = "completed"
+    elif code == 3 and result["report"]:
+        reason = open(os.path.join(folder, "failure_report.txt")).read().splitlines()
+        result["outcome"] = "stopped cleanly (" + (reason[0][:60] if reason else "report") + ")"
+    else:
+        result["outcome"] = f"CRASHED (exit {code})"
+    print(f"{label}: {result['outcome']}, t = {result['reached']:.4g} s, {result['steps']} steps, "
+          f"{result['rejected']} rejected, alpha_s [{result['alpha'][0]:.2e}, {result['alpha'][1]:.4f}], "
+          f"drift {result['drift']:.1e}, {wall:.0f} s", flush=True)
+    return result
+
+
+with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
+    results = list(pool.map(run, cases))
+
+lines = [f"Command: `python3 benchmarks/stress.py --end-time {args.end_time:g} --jobs {args.jobs}`"
+         f"{' --long' if args.long else ''} (`prm/bubbling_bed_2d.prm`, 600 cells, unless the case says otherwise;",
+         f"U_mf by Wen–Yu: {u_mf:.3f} m/s for 350 µm, {u_mf_fine:.4f} m/s for 100 µm; runs two at a time on the",
+         "2-core machine, so the wall times are upper bounds).", "",
+         "| case | outcome | simulated | steps | rejected | α_s range | Θ range (m²/s²) | mass drift | NaN-free | wall s |",
+         "|---|---|---|---|---|---|---|---|---|---|"]
+for r in results:
+    lines.append(f"| {r['label']} | {r['outcome']} | {r['reached']:.3g} / {r['end']:g} s | {r['steps']} | {r['rejected']} | "
+                 f"[{r['alpha'][0]:.1e}, {r['alpha'][1]:.4f}] | [{r['theta'][0]:.1e}, {r['theta'][1]:.3g}] | {r['drift']:.1e} | "
+                 f"{'yes' if r['finite'] else 'NO'} | {r['wall']:.0f} |")
+replace_doc_section(root, "stress", "Stress benchmark (issue 7)", lines)
+print("\n".join(lines))
