@@ -10,7 +10,10 @@ beads); 100 um particles (stiff drag) at 8 of their U_mf; the wettest loading of
 seed-000 sweep (delta = 0.138e-2, prm/wet_column_2d.prm); AMR adapting at every step
 (levels 0-2); 2 MPI ranks; and a CFL sweep: fixed time steps of 0.5, 1, 2, 4 ms with
 BDF1 and BDF2 (adaptive stepping off, rejected steps still halve dt). --long adds the
-20 s dry run (about 4 h here).
+20 s dry run (about 4 h here); it writes a checkpoint every 500 steps, and a later
+`--long --only long` continues it from there (`wetbed --resume`), adding up the wall time
+of its pieces. Every case's result is kept in build/benchmarks/stress/NAME.json and the
+table lists all cases that have one, so --only reruns some without losing the others.
 
 usage: python3 benchmarks/stress.py [--end-time 0.2] [--jobs 2] [--long] [--only NAME ...]
 (build first: bash scripts/build.sh)
@@ -18,6 +21,7 @@ usage: python3 benchmarks/stress.py [--end-time 0.2] [--jobs 2] [--long] [--only
 import argparse
 import concurrent.futures
 import csv
+import json
 import math
 import os
 import re
@@ -32,6 +36,8 @@ parser.add_argument("--end-time", type=float, default=0.2)
 parser.add_argument("--jobs", type=int, default=2)
 parser.add_argument("--long", action="store_true")
 parser.add_argument("--only", nargs="*")
+parser.add_argument("--collect", action="store_true",
+                    help="only record cases run before results were kept in NAME.json")
 args = parser.parse_args()
 work = os.path.join(root, "build", "benchmarks", "stress")
 os.makedirs(work, exist_ok=True)
@@ -66,8 +72,12 @@ for order in (1, 2):
         cases.append((f"BDF{order}, fixed dt = {1e3 * dt:g} ms", dry,
                       f"subsection time stepping\n set adaptive = false\n set bdf order = {order}\n"
                       f" set initial time step = {dt}\n set maximum time step = {dt}\nend\n", 1))
-if args.long:
-    cases.append(("long dry run, 20 s", dry, "", 1))
+cases.append(("long dry run, 20 s", dry, "", 1))
+all_labels = [c[0] for c in cases]
+if not args.long:
+    cases = cases[:-1]
+if args.collect:
+    cases = []
 if args.only:
     cases = [c for c in cases if any(o in c[0] for o in args.only)]
 
@@ -75,16 +85,36 @@ if args.only:
 def run(case):
     label, base, sections, ranks = case
     name = re.sub(r"[^a-z0-9]+", "_", label.lower()).strip("_")
-    end = 20.0 if label.startswith("long") else args.end_time
-    prm, folder, log = write_case(work, name, base, end, sections + "subsection checkpoint\n set at end = false\nend\n",
+    long = label.startswith("long")
+    end = 20.0 if long else args.end_time
+    checkpoints = " set interval = 500\n" if long else ""
+    prm, folder, log = write_case(work, name, base, end,
+                                  sections + f"subsection checkpoint\n set at end = false\n{checkpoints}end\n",
                                   field_interval=1000)
     command = [os.path.join(root, "build", "wetbed"), prm]
+    pieces = os.path.join(work, name + ".wall")
+    resume = long and os.path.isdir(os.path.join(folder, "checkpoint")) and os.path.exists(pieces)
+    if resume:
+        command.append("--resume")
+    earlier = float(open(pieces).read()) if resume else 0.0
     if ranks > 1:
         command = ["mpirun", "--oversubscribe", "-np", str(ranks)] + command
     begin = time.time()
-    with open(log, "w") as out:
-        code = subprocess.run(command, stdout=out, stderr=subprocess.STDOUT, env=env).returncode
-    wall = time.time() - begin
+    with open(log, "a" if resume else "w") as out:
+        process = subprocess.Popen(command, stdout=out, stderr=subprocess.STDOUT, env=env)
+        while process.poll() is None:
+            time.sleep(5)
+            if long:
+                with open(pieces, "w") as f:
+                    f.write(str(earlier + time.time() - begin))
+        code = process.returncode
+    wall = earlier + time.time() - begin
+    record(label, name, folder, code, wall)
+
+
+def record(label, name, folder, code, wall):
+    """The result of one case from its folder, kept in NAME.json and printed."""
+    end = 20.0 if label.startswith("long") else args.end_time
     rows = list(csv.DictReader(open(os.path.join(folder, "monitors.csv")))) if os.path.exists(os.path.join(folder, "monitors.csv")) else []
     values = lambda key: [float(r[key]) for r in rows]  # noqa: E731
     result = {"label": label, "code": code, "wall": wall, "end": end,
@@ -103,6 +133,8 @@ def run(case):
         result["outcome"] = "stopped cleanly (" + (reason[0][:60] if reason else "report") + ")"
     else:
         result["outcome"] = f"CRASHED (exit {code})"
+    with open(os.path.join(work, name + ".json"), "w") as f:
+        json.dump(result, f)
     print(f"{label}: {result['outcome']}, t = {result['reached']:.4g} s, {result['steps']} steps, "
           f"{result['rejected']} rejected, alpha_s [{result['alpha'][0]:.2e}, {result['alpha'][1]:.4f}], "
           f"drift {result['drift']:.1e}, {wall:.0f} s", flush=True)
@@ -110,10 +142,22 @@ def run(case):
 
 
 with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
-    results = list(pool.map(run, cases))
+    list(pool.map(run, cases))
+if args.collect:
+    for label in all_labels:
+        name = re.sub(r"[^a-z0-9]+", "_", label.lower()).strip("_")
+        folder, log = os.path.join(work, name), os.path.join(work, name + ".log")
+        if os.path.exists(os.path.join(folder, "monitors.csv")) and not os.path.exists(os.path.join(work, name + ".json")):
+            finished = re.search(r"Finished: .* wall ([\d.e+-]+) s", open(log).read())
+            record(label, name, folder, 0 if finished else 3, float(finished.group(1)) if finished else math.nan)
+results = []
+for label in all_labels:
+    stored = os.path.join(work, re.sub(r"[^a-z0-9]+", "_", label.lower()).strip("_") + ".json")
+    if os.path.exists(stored):
+        results.append(json.load(open(stored)))
 
 lines = [f"Command: `python3 benchmarks/stress.py --end-time {args.end_time:g} --jobs {args.jobs}`"
-         f"{' --long' if args.long else ''} (`prm/bubbling_bed_2d.prm`, 600 cells, unless the case says otherwise;",
+         " (the 20 s row: `--long --only long`, continued over sessions from its checkpoints; `prm/bubbling_bed_2d.prm`, 600 cells, unless the case says otherwise;",
          f"U_mf by Wen–Yu: {u_mf:.3f} m/s for 350 µm, {u_mf_fine:.4f} m/s for 100 µm; runs two at a time on the",
          "2-core machine, so the wall times are upper bounds).", "",
          "| case | outcome | simulated | steps | rejected | α_s range | Θ range (m²/s²) | mass drift | NaN-free | wall s |",
