@@ -8,6 +8,7 @@ CHECK: ergun | hydrostatic | packed | settling | ramp | kinetic | ranks | bubbli
 import csv
 import math
 import os
+import re
 import subprocess
 import sys
 
@@ -382,6 +383,16 @@ elif check == "failure":
            "cause of the last rejection: FGMRES did not converge" in text, "the report names the cause")
     expect(all(k in text for k in ("alpha_s max", "Theta min", "|u_g| max", ") m", "P_s")),
            "the report locates the extremes of alpha_s, Theta, u and gives the closures there")
+    # the residual history: every attempt (dt halving from the first), each FGMRES solve
+    # with its 3 iterations from the initial to the final residual, marked as failed
+    attempts = re.findall(r"attempt (\d+): dt ([0-9.e+-]+) s", text)
+    solves = re.findall(r"flow FGMRES: (\d+) iterations, residual ([0-9.e+-]+) -> ([0-9.e+-]+) \(target ([0-9.e+-]+)\) FAILED", text)
+    expect(len(attempts) >= 3 and all(abs(float(attempts[i + 1][1]) / float(attempts[i][1]) - 0.5) < 1e-9
+                                      for i in range(len(attempts) - 1)),
+           f"the residual history lists every attempt with dt halving ({len(attempts)} attempts)")
+    expect(len(solves) == len(attempts) and all(int(n) == 3 and float(r1) < float(r0) and float(r1) > float(t)
+                                                for n, r0, r1, t in solves),
+           "each attempt's FGMRES: 3 iterations, residual falling but above its target")
     expect(os.path.isfile(os.path.join(folder, "checkpoint", "state")) and os.path.isfile(os.path.join(folder, "fields_00001.pvtu")),
            "the last good state was written (checkpoint and fields)")
     rows = run("bubbling_bed_2d", "subsection time stepping\n set end time = 2e-3\nend\n", 1, folder, resume=True)

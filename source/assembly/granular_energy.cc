@@ -284,6 +284,7 @@ bool TwoFluidSolver<dim>::update_granular_temperature (const BDFCoefficients &bd
       solution (i) = theta (i);
     SolverControl control (
         500, parameters.linear_solver.scalar_tolerance * rhs.l2_norm () + 1e-300);
+    control.enable_history_data ();
     // right preconditioning: the tolerance applies to the true residual. Left (deal.II's
     // default) measures the AMG-preconditioned residual, ~dt/capacity smaller here: the
     // Theta solves stopped at a true residual ~1e-4 relative (measured: Theta at 2e-4 s
@@ -295,9 +296,11 @@ bool TwoFluidSolver<dim>::update_granular_temperature (const BDFCoefficients &bd
     try
     {
       gmres.solve (granular_energy_matrix, solution, rhs, amg);
+      solve_history.record ("granular temperature GMRES", control, true);
     }
     catch (const SolverControl::NoConvergence &failure)
     {
+      solve_history.record ("granular temperature GMRES", control, false);
       std::ostringstream reason;
       reason << "granular temperature GMRES did not converge: " << failure.last_step
              << " iterations, residual " << failure.last_residual / rhs.l2_norm ()

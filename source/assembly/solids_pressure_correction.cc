@@ -169,10 +169,20 @@ bool TwoFluidSolver<dim>::correct_solids_pressure (const AlphaVector     &alpha_
   increment = 0;
   SolverControl control (
       1000, parameters.linear_solver.scalar_tolerance * rhs.l2_norm () + 1e-300);
+  control.enable_history_data ();
   SolverCG<TrilinosWrappers::MPI::Vector> cg (control);
   TrilinosWrappers::PreconditionAMG       amg;
   amg.initialize (correction_matrix);
-  cg.solve (correction_matrix, increment, rhs, amg);
+  try
+  {
+    cg.solve (correction_matrix, increment, rhs, amg);
+  }
+  catch (const SolverControl::NoConvergence &)
+  {
+    solve_history.record ("solids-pressure correction CG", control, false);
+    throw;
+  }
+  solve_history.record ("solids-pressure correction CG", control, true);
   // the nodal pressure increment w = S z becomes the limited edge fluxes
   // -dt K_ij (w_j - w_i)
   AlphaVector pressure_increment (alpha);

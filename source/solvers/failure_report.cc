@@ -126,6 +126,7 @@ std::string TwoFluidSolver<dim>::describe_failed_state (const double dt) const
            << " Pa s, frictional mu " << stress.frictional_viscosity << " Pa s, wet mu "
            << stress.wet_viscosity << " Pa s\n";
   }
+  report << solve_history.describe ();
   report << "the last accepted state is in checkpoint/ (resume with --resume after "
             "changing the case) and in the last field output\n";
   return report.str ();

@@ -59,7 +59,8 @@ unsigned int TwoFluidSolver<dim>::solve_flow_system (const double current_dt)
     TimerOutput::Scope scope (timer, "Krylov solve");
     solution = flow_solution; // lagged iterate as the initial guess
     flow_constraints.set_zero (solution);
-    SolverControl             control (limit, std::max (target, 1e-300));
+    SolverControl control (limit, std::max (target, 1e-300));
+    control.enable_history_data ();
     SolverFGMRES<BlockVector> fgmres (
         control, typename SolverFGMRES<BlockVector>::AdditionalData (ls.restart));
     try
@@ -68,6 +69,8 @@ unsigned int TwoFluidSolver<dim>::solve_flow_system (const double current_dt)
     }
     catch (const SolverControl::NoConvergence &)
     {
+      solve_history.record (
+          reused ? "flow FGMRES (reused AMG)" : "flow FGMRES", control, false);
       spent += control.last_step ();
       if (reused)
       {
@@ -82,6 +85,8 @@ unsigned int TwoFluidSolver<dim>::solve_flow_system (const double current_dt)
       return numbers::invalid_unsigned_int;
     }
     const unsigned int iterations = control.last_step ();
+    solve_history.record (
+        reused ? "flow FGMRES (reused AMG)" : "flow FGMRES", control, true);
     if (ls.verbose)
       pcout << "    FGMRES " << iterations << " iterations"
             << (reused ? " (reused AMG)" : "") << std::endl;

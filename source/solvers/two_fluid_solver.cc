@@ -458,6 +458,7 @@ bool TwoFluidSolver<dim>::try_time_step (const double dt, const unsigned int bdf
   AlphaVector alpha_momentum (alpha);
   for (unsigned int k = 0; k < parameters.time.outer_iterations; ++k)
   {
+    solve_history.set_outer_iteration (k);
     // 1. closures at quadrature points + monolithic (u_g, u_s, p') solve with
     //    P_s(alpha_m) explicit, alpha_m the latest alpha_s (alpha_s^n at k = 0)
     assemble_flow_system (bdf, dt);
@@ -537,8 +538,10 @@ void TwoFluidSolver<dim>::advance ()
   // save the state to retry from
   const BlockVector saved_flow (flow_solution);
   unsigned int      order = (step_number == 0) ? 1 : ts.bdf_order;
+  solve_history.clear ();
   while (true)
   {
+    solve_history.begin_attempt (dt, order);
     bool accepted = false;
     try
     {
@@ -554,6 +557,7 @@ void TwoFluidSolver<dim>::advance ()
     }
     if (accepted)
       break;
+    solve_history.reject (rejection_reason);
     ++rejected_steps;
     dt *= 0.5;
     order = 1;

@@ -11,6 +11,7 @@
 #include <wetbed/postprocess/bubble_analysis.h>
 #include <wetbed/postprocess/monitors.h>
 #include <wetbed/solvers/block_preconditioner.h>
+#include <wetbed/solvers/solve_history.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/data_out_base.h>
@@ -240,5 +241,6 @@ private:
   bool         initialized            = false;
   bool         resumed                = false; // the state came from a checkpoint
   std::string  rejection_reason;               // why the last attempted step was rejected
+  SolveHistory solve_history;                  // the linear solves of the current step
 };
 } // namespace wetbed
