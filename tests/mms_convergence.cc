@@ -20,6 +20,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <sstream>
 
 using namespace wetbed;
 using dealii::Point;
@@ -348,6 +349,7 @@ run_level (const Parameters &parameters, const bool two_fluid, const bool rotati
 } // namespace
 
 // usage: test_mms_convergence DIM single|two-fluid|rotation-Nitsche|rotation-strong
+//        SOURCE_DIR WORK_DIR [EXTRA_SETTINGS.prm]
 //        SOURCE_DIR WORK_DIR
 int main (int argc, char **argv)
 {
@@ -357,6 +359,15 @@ int main (int argc, char **argv)
   const bool two_fluid = kind != "single", rotation = kind.rfind ("rotation", 0) == 0;
   const std::string no_penetration = rotation ? kind.substr (kind.find ('-') + 1) : "";
   const std::string source = argv[3], work = argv[4];
+  // diagnosis: a file of further settings appended to every level's case
+  std::string extra_settings;
+  if (argc > 5)
+  {
+    std::ifstream      in (argv[5]);
+    std::ostringstream text;
+    text << in.rdbuf ();
+    extra_settings = text.str ();
+  }
   const std::string mesh =
       source + (dim == 2 ? "/tests/meshes/square.geo" : "/tests/meshes/cylinder.geo");
   const std::vector<unsigned int> levels =
@@ -370,7 +381,8 @@ int main (int argc, char **argv)
                                std::to_string (level);
     std::filesystem::create_directories (folder);
     const std::string prm_file = folder + "/case.prm";
-    std::ofstream (prm_file) << case_text (dim, mesh, level, folder, no_penetration);
+    std::ofstream (prm_file) << case_text (dim, mesh, level, folder, no_penetration)
+                             << extra_settings;
     dealii::ParameterHandler prm;
     const Parameters         parameters = Parameters::read (prm_file, prm);
     const auto [e, n_cells] = dim == 2 ? run_level<2> (parameters, two_fluid, rotation)

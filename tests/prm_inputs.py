@@ -111,6 +111,15 @@ cases = [
     ("3D point probe in a 2D case", "subsection bed monitors\n set point probes = 0.01, 0.02, 0.03\nend", "bed monitors/point probes"),
     ("point probe not a number", "subsection bed monitors\n set point probes = 0.01, high\nend", "bed monitors/point probes"),
     ("zero Welch segments", "subsection spectrum\n set segments = 0\nend", "segments"),
+    ("periodic boundaries with one group", "subsection mesh\n set periodic boundaries = inlet\nend", "mesh/periodic boundaries"),
+    ("periodic boundaries that are the wall", "subsection mesh\n set periodic boundaries = wall, outlet\nend", "mesh/periodic boundaries"),
+    ("periodic group not in the mesh", "subsection mesh\n set periodic boundaries = front, back\nend", "mesh/periodic boundaries"),
+    ("periodic faces that do not match", "subsection mesh\n set inlet =\n set outlet =\n set periodic boundaries = inlet, outlet\n set periodic direction = x\nend", "mesh/periodic boundaries"),
+    ("inlet without an outlet", "subsection mesh\n set outlet =\nend", "mesh/outlet"),
+    ("moving wall not in the mesh", "subsection boundary conditions\n set moving wall = lid\nend", "boundary conditions/moving wall"),
+    ("moving wall that is the inlet", "subsection boundary conditions\n set moving wall = inlet\nend", "boundary conditions/moving wall"),
+    ("moving wall velocity not a number", "subsection boundary conditions\n set moving wall velocity = 0, fast, 0\nend", "boundary conditions/moving wall velocity"),
+    ("moving wall velocity through the wall", f"subsection mesh\n set file = {os.path.join(source, 'meshes', 'couette_cell_2d.geo')}\n set inlet =\n set outlet =\n set periodic boundaries = bottom, top\nend\nsubsection boundary conditions\n set moving wall = moving wall\n set moving wall velocity = 0.5, 0, 0\nend", "boundary conditions/moving wall velocity"),
     ("unwritable output folder", "subsection output\n set folder = /proc/wetbed-output\nend", "output/folder"),
 ]
 corrupt = os.path.join(work, "corrupt.msh")

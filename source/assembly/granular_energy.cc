@@ -209,7 +209,11 @@ bool TwoFluidSolver<dim>::update_granular_temperature (const BDFCoefficients &bd
           if (!face->at_boundary ())
             continue;
           const bool wall_face =
-              johnson_jackson_walls && face->boundary_id () == boundary_ids.wall;
+              johnson_jackson_walls && boundary_ids.is_wall (face->boundary_id ());
+          Tensor<1, dim> wall_motion; // the slip is relative to a moving wall
+          if (face->boundary_id () == boundary_ids.moving_wall)
+            for (unsigned int d = 0; d < dim; ++d)
+              wall_motion[d] = parameters.boundary.moving_wall_velocity[d];
           if (manufactured_theta)
           {
             theta_face.reinit (cell, face);
@@ -233,11 +237,12 @@ bool TwoFluidSolver<dim>::update_granular_temperature (const BDFCoefficients &bd
             flow_face[solids].get_function_values (flow_solution, us_face);
             for (unsigned int q = 0; q < face_quadrature.size (); ++q)
             {
-              const double alpha_s      = std::max (a_face[q], 0.0);
-              const double theta_star   = std::max (t_face[q], kt.minimum_temperature);
-              const double g0           = kinetic_theory->radial_distribution (alpha_s);
-              const Tensor<1, dim> n_w  = flow_face.normal_vector (q);
-              const double         slip = (us_face[q] - (us_face[q] * n_w) * n_w).norm ();
+              const double alpha_s     = std::max (a_face[q], 0.0);
+              const double theta_star  = std::max (t_face[q], kt.minimum_temperature);
+              const double g0          = kinetic_theory->radial_distribution (alpha_s);
+              const Tensor<1, dim> n_w = flow_face.normal_vector (q);
+              const Tensor<1, dim> relative = us_face[q] - wall_motion;
+              const double         slip     = (relative - (relative * n_w) * n_w).norm ();
               const double         generation =
                   kt.dilute_weight (alpha_s) * kinetic_theory->wall ().energy_generation (
                                                    alpha_s, g0, theta_star, slip);

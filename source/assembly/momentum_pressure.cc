@@ -284,10 +284,11 @@ void TwoFluidSolver<dim>::assemble_flow_system (const BDFCoefficients &bdf,
       if (!face->at_boundary ())
         continue;
       const auto id                 = face->boundary_id ();
-      const bool wall_friction_face = partial_slip && id == boundary_ids.wall;
+      const bool wall_friction_face = partial_slip && boundary_ids.is_wall (id);
+      const bool moving_face        = id == boundary_ids.moving_wall;
       const bool traction_face      = manufactured && id == boundary_ids.outlet;
       const bool backflow_face      = stabilized && id == boundary_ids.outlet;
-      const bool nitsche_face = id == boundary_ids.wall && (nitsche[0] || nitsche[1]);
+      const bool nitsche_face = boundary_ids.is_wall (id) && (nitsche[0] || nitsche[1]);
       const bool source_face  = wall_source && id == boundary_ids.wall;
       if (!wall_friction_face && !traction_face && !backflow_face && !nitsche_face &&
           !source_face)
@@ -362,6 +363,14 @@ void TwoFluidSolver<dim>::assemble_flow_system (const BDFCoefficients &bdf,
           add_nitsche_no_penetration (
               face_values, q, component, phases, nitsche_gamma, h, cell_matrix, cell_rhs);
         }
+        // the slip is relative to a moving wall: C P_t (u - u_w), P_t u_w on the rhs
+        Tensor<1, dim> wall_motion;
+        if (moving_face && wall_friction_face)
+        {
+          for (unsigned int d = 0; d < dim; ++d)
+            wall_motion[d] = parameters.boundary.moving_wall_velocity[d];
+          wall_motion -= (wall_motion * n) * n;
+        }
         Tensor<1, dim> traction[2];
         if (traction_face)
         {
@@ -399,6 +408,8 @@ void TwoFluidSolver<dim>::assemble_flow_system (const BDFCoefficients &bdf,
               cell_matrix (i, j) +=
                   friction * projector * phi_i * face_values.shape_value (j, q) * JxW;
             }
+          if (wall_friction_face && k == 1)
+            cell_rhs (i) += friction * wall_motion[d] * phi_i * JxW;
         }
       }
     }

@@ -21,63 +21,6 @@ using dealii::Patterns::Integer;
 using dealii::Patterns::List;
 using dealii::Patterns::Selection;
 
-namespace
-{
-WallCondition wall_condition_from_string (const std::string &name)
-{
-  if (name == "no-slip")
-    return WallCondition::no_slip;
-  if (name == "free-slip")
-    return WallCondition::free_slip;
-  if (name == "Johnson-Jackson")
-    return WallCondition::johnson_jackson;
-  return WallCondition::partial_slip;
-}
-} // namespace
-
-void MeshParameters::declare_parameters (ParameterHandler &prm)
-{
-  prm.enter_subsection ("mesh");
-  prm.declare_entry ("file",
-                     "../meshes/column_2d.geo",
-                     Anything (),
-                     "gmsh geometry (.geo, meshed with the gmsh executable at start) or "
-                     "mesh (.msh). A relative path is taken relative to the .prm file.");
-  prm.declare_entry ("initial refinement",
-                     "1",
-                     Integer (0, 10),
-                     "Uniform refinements of the gmsh mesh after reading.");
-  prm.declare_entry (
-      "inlet", "inlet", Anything (), "Physical group name of the gas inlet.");
-  prm.declare_entry (
-      "outlet", "outlet", Anything (), "Physical group name of the outlet.");
-  prm.declare_entry ("wall", "wall", Anything (), "Physical group name of the walls.");
-  prm.declare_entry ("cylindrical wall",
-                     "false",
-                     Bool (),
-                     "Attach a cylindrical manifold (axis along gravity through the mesh "
-                     "centre) to the walls, for curved 3D columns.");
-  prm.declare_entry ("mapping degree",
-                     "2",
-                     Integer (1, 4),
-                     "Polynomial degree of the geometry mapping (2 for curved walls).");
-  prm.leave_subsection ();
-}
-
-void MeshParameters::parse_parameters (ParameterHandler &prm)
-{
-  prm.enter_subsection ("mesh");
-  file               = prm.get ("file");
-  initial_refinement = prm.get_integer ("initial refinement");
-  inlet_name         = prm.get ("inlet");
-  outlet_name        = prm.get ("outlet");
-  wall_name          = prm.get ("wall");
-  cylindrical_wall   = prm.get_bool ("cylindrical wall");
-  mapping_degree     = prm.get_integer ("mapping degree");
-  prm.leave_subsection ();
-  require (!file.empty (), "mesh/file", "is empty");
-}
-
 void PhysicalProperties::declare_parameters (ParameterHandler &prm)
 {
   prm.enter_subsection ("physical properties");
@@ -130,24 +73,7 @@ void PhysicalProperties::parse_parameters (ParameterHandler &prm)
   require (residual_solids_fraction >= 0.0 && residual_solids_fraction <= 1e-2,
            "physical properties/residual solids fraction",
            "must lie in [0, 1e-2]");
-  std::vector<std::string> parts = dealii::Utilities::split_string_list (g_text, ',');
-  require (parts.size () == 3,
-           "physical properties/gravity",
-           "needs three comma-separated numbers (got '" + g_text + "')");
-  for (unsigned int d = 0; d < 3; ++d)
-  {
-    try
-    {
-      std::size_t used = 0;
-      gravity[d]       = std::stod (parts[d], &used);
-      require (used == parts[d].size (), "physical properties/gravity", "bad number");
-    }
-    catch (const std::logic_error &)
-    {
-      throw InputError ("physical properties/gravity",
-                        "'" + parts[d] + "' is not a number");
-    }
-  }
+  gravity = parse_vector (g_text, "physical properties/gravity");
   require (gravity.norm () > 0.0, "physical properties/gravity", "must not be zero");
 }
 
@@ -202,100 +128,6 @@ void SolidsStressParameters::parse_parameters (ParameterHandler &prm,
                minimum_packing_distance < maximum_packing - frictional_onset,
            "solids stress/minimum packing distance",
            "must lie in (0, maximum packing - frictional onset)");
-}
-
-void BoundaryConditionParameters::declare_parameters (ParameterHandler &prm)
-{
-  prm.enter_subsection ("boundary conditions");
-  prm.declare_entry (
-      "inlet superficial velocity",
-      "0.8",
-      Anything (),
-      "Superficial gas velocity U at the inlet (m/s), a function of t; the "
-      "gas enters at U/alpha_g with the local gas fraction "
-      "(muparser syntax, e.g. 'min(0.8, 0.2*t)').");
-  prm.declare_entry ("gas wall condition",
-                     "no-slip",
-                     Selection ("no-slip|free-slip"),
-                     "Gas velocity condition on walls.");
-  prm.declare_entry ("solids wall condition",
-                     "free-slip",
-                     Selection ("no-slip|free-slip|partial-slip|Johnson-Jackson"),
-                     "Solids tangential condition on walls (no penetration always); "
-                     "Johnson-Jackson needs solids stress/model = kinetic theory.");
-  prm.declare_entry ("solids wall friction",
-                     "0",
-                     Double (0),
-                     "Robin coefficient C (kg m^-2 s^-1) of the partial-slip traction "
-                     "-C u_slip.");
-  prm.declare_entry ("no-penetration",
-                     "strong",
-                     Selection ("Nitsche|strong"),
-                     "How u.n = 0 is imposed on slip walls (free-slip, partial-slip, "
-                     "Johnson-Jackson): symmetric Nitsche (weak, with the mapped "
-                     "normal at the quadrature points) or strong no-normal-flux "
-                     "constraints at the nodes. Nitsche runs the 2D bed; on curved 3D "
-                     "walls its steady MMS solve does not converge yet.");
-  prm.declare_entry ("Nitsche penalty",
-                     "10",
-                     Double (),
-                     "gamma_0 of the Nitsche penalty gamma_0 (degree + 1)^2 mu*/h.");
-  prm.declare_entry ("hold solids",
-                     "false",
-                     Bool (),
-                     "Hold the solids velocity at 'held solids velocity' everywhere (a "
-                     "fixed bed, e.g. the Ergun test, or a frozen shear); alpha_s is "
-                     "then not transported, Theta still evolves.");
-  prm.declare_entry ("held solids velocity",
-                     "0; 0; 0",
-                     Anything (),
-                     "u_s (m/s) where solids are held: three ';'-separated expressions "
-                     "in x, y, z, t (muparser); in 2D the third is ignored.");
-  prm.leave_subsection ();
-}
-
-void BoundaryConditionParameters::parse_parameters (ParameterHandler &prm)
-{
-  prm.enter_subsection ("boundary conditions");
-  inlet_superficial_velocity = prm.get ("inlet superficial velocity");
-  gas_wall             = wall_condition_from_string (prm.get ("gas wall condition"));
-  solids_wall          = wall_condition_from_string (prm.get ("solids wall condition"));
-  solids_wall_friction = prm.get_double ("solids wall friction");
-  hold_solids          = prm.get_bool ("hold solids");
-  nitsche              = prm.get ("no-penetration") == "Nitsche";
-  nitsche_penalty      = prm.get_double ("Nitsche penalty");
-  held_solids_velocity = prm.get ("held solids velocity");
-  prm.leave_subsection ();
-  try
-  {
-    dealii::FunctionParser<3> f (3);
-    f.initialize ("x,y,z,t", held_solids_velocity, {}, true);
-    (void)f.value (dealii::Point<3> (), 0);
-  }
-  catch (...)
-  {
-    throw InputError ("boundary conditions/held solids velocity",
-                      "'" + held_solids_velocity +
-                          "' is not three ';'-separated expressions in x, y, z, t");
-  }
-  try
-  {
-    dealii::FunctionParser<1> f (1);
-    f.initialize ("t", inlet_superficial_velocity, {});
-    (void)f.value (dealii::Point<1> (0.0));
-  }
-  catch (...)
-  {
-    throw InputError ("boundary conditions/inlet superficial velocity",
-                      "'" + inlet_superficial_velocity +
-                          "' is not a valid expression in t");
-  }
-  require (nitsche_penalty >= 1.0,
-           "boundary conditions/Nitsche penalty",
-           "must be >= 1 (the symmetric form needs a large enough penalty)");
-  require (solids_wall != WallCondition::partial_slip || solids_wall_friction > 0,
-           "boundary conditions/solids wall friction",
-           "must be > 0 for a partial-slip wall");
 }
 
 void InitialConditionParameters::declare_parameters (ParameterHandler &prm)
@@ -419,6 +251,12 @@ void LinearSolverParameters::declare_parameters (ParameterHandler &prm)
       "FGMRES iterations than ILU but cheaper ones (2D bed start-up 29 vs "
       "51 per solve, 3D column start-up 145 s vs 229 s); ILU sees the drag "
       "coupling of the two velocities inside a node.");
+  prm.declare_entry ("rotation modes",
+                     "false",
+                     Bool (),
+                     "Give the velocity AMG the rigid rotations of each phase as "
+                     "near-null modes besides the translations of each component (for "
+                     "slip walls on curved boundaries, where a rotation is nearly free).");
   prm.declare_entry ("smoother sweeps",
                      "4",
                      Integer (1, 10),
@@ -463,6 +301,7 @@ void LinearSolverParameters::parse_parameters (ParameterHandler &prm)
   restart               = prm.get_integer ("restart");
   smoother              = prm.get ("velocity smoother");
   smoother_sweeps       = prm.get_integer ("smoother sweeps");
+  rotation_modes        = prm.get_bool ("rotation modes");
   inner_solves          = prm.get ("inner solves");
   aggregation_threshold = prm.get_double ("aggregation threshold");
   rebuild_growth        = prm.get_double ("rebuild growth");

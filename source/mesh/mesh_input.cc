@@ -73,6 +73,7 @@ std::string resolve_path (const std::string &file, const std::string &directory)
 
 template <int dim>
 BoundaryIds read_mesh (const MeshParameters       &parameters,
+                       const std::string          &moving_wall_name,
                        const std::string          &parameter_directory,
                        const std::string          &output_folder,
                        const dealii::Tensor<1, 3> &gravity,
@@ -94,13 +95,30 @@ BoundaryIds read_mesh (const MeshParameters       &parameters,
   {
     const auto it = names.find (name);
     require (it != names.end (),
-             "mesh/" + parameter,
+             parameter,
              "physical group '" + name + "' is not in the mesh '" + msh + "'");
     return static_cast<dealii::types::boundary_id> (it->second);
   };
-  const BoundaryIds ids{id_of (parameters.inlet_name, "inlet"),
-                        id_of (parameters.outlet_name, "outlet"),
-                        id_of (parameters.wall_name, "wall")};
+  BoundaryIds ids;
+  if (!parameters.inlet_name.empty ())
+    ids.inlet = id_of (parameters.inlet_name, "mesh/inlet");
+  if (!parameters.outlet_name.empty ())
+    ids.outlet = id_of (parameters.outlet_name, "mesh/outlet");
+  ids.wall = id_of (parameters.wall_name, "mesh/wall");
+  if (!parameters.periodic_low_name.empty ())
+  {
+    ids.periodic_low  = id_of (parameters.periodic_low_name, "mesh/periodic boundaries");
+    ids.periodic_high = id_of (parameters.periodic_high_name, "mesh/periodic boundaries");
+  }
+  if (!moving_wall_name.empty ())
+  {
+    ids.moving_wall = id_of (moving_wall_name, "boundary conditions/moving wall");
+    require (ids.moving_wall != ids.wall && ids.moving_wall != ids.inlet &&
+                 ids.moving_wall != ids.outlet && ids.moving_wall != ids.periodic_low &&
+                 ids.moving_wall != ids.periodic_high,
+             "boundary conditions/moving wall",
+             "'" + moving_wall_name + "' is already another boundary of the case");
+  }
 
   dealii::GridIn<dim> grid_in (triangulation);
   std::ifstream       in (msh);
@@ -129,6 +147,38 @@ BoundaryIds read_mesh (const MeshParameters       &parameters,
       triangulation.set_manifold (2, transfinite);
     }
   }
+  if (ids.periodic_low != BoundaryIds::none)
+  {
+    std::vector<dealii::GridTools::PeriodicFacePair<
+        typename dealii::parallel::distributed::Triangulation<dim>::cell_iterator>>
+        pairs;
+    const std::string mismatch = "the faces of '" + parameters.periodic_high_name +
+                                 "' are not those of '" + parameters.periodic_low_name +
+                                 "' translated along the periodic direction";
+    try
+    {
+      dealii::GridTools::collect_periodic_faces (triangulation,
+                                                 ids.periodic_low,
+                                                 ids.periodic_high,
+                                                 parameters.periodic_direction,
+                                                 pairs);
+    }
+    catch (const std::exception &)
+    {
+      throw InputError ("mesh/periodic boundaries", mismatch);
+    }
+    std::size_t low_faces = 0;
+    for (const auto &cell : triangulation.active_cell_iterators ())
+      for (const auto &face : cell->face_iterators ())
+        low_faces += face->at_boundary () && face->boundary_id () == ids.periodic_low;
+    require (parameters.periodic_direction < dim && !pairs.empty () &&
+                 pairs.size () == low_faces,
+             "mesh/periodic boundaries",
+             "the faces of '" + parameters.periodic_high_name + "' are not those of '" +
+                 parameters.periodic_low_name +
+                 "' translated along the periodic direction");
+    triangulation.add_periodicity (pairs);
+  }
   triangulation.refine_global (parameters.initial_refinement);
   return ids;
 }
@@ -136,9 +186,11 @@ BoundaryIds read_mesh (const MeshParameters       &parameters,
 template BoundaryIds read_mesh<2> (const MeshParameters &,
                                    const std::string &,
                                    const std::string &,
+                                   const std::string &,
                                    const dealii::Tensor<1, 3> &,
                                    dealii::parallel::distributed::Triangulation<2> &);
 template BoundaryIds read_mesh<3> (const MeshParameters &,
+                                   const std::string &,
                                    const std::string &,
                                    const std::string &,
                                    const dealii::Tensor<1, 3> &,

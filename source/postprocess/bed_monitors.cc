@@ -54,11 +54,14 @@ MonitorRow TwoFluidSolver<dim>::evaluate_monitors () const
             (inlet ? inlet_area : outlet_area) += face_values.JxW (q);
           }
         }
-  inlet_integral    = Utilities::MPI::sum (inlet_integral, communicator);
-  inlet_area        = Utilities::MPI::sum (inlet_area, communicator);
-  outlet_integral   = Utilities::MPI::sum (outlet_integral, communicator);
-  outlet_area       = Utilities::MPI::sum (outlet_area, communicator);
-  row.pressure_drop = inlet_integral / inlet_area - outlet_integral / outlet_area;
+  inlet_integral  = Utilities::MPI::sum (inlet_integral, communicator);
+  inlet_area      = Utilities::MPI::sum (inlet_area, communicator);
+  outlet_integral = Utilities::MPI::sum (outlet_integral, communicator);
+  outlet_area     = Utilities::MPI::sum (outlet_area, communicator);
+  // a closed or periodic domain has no inlet or outlet: no pressure drop, no FI
+  row.pressure_drop = inlet_area > 0 && outlet_area > 0
+                          ? inlet_integral / inlet_area - outlet_integral / outlet_area
+                          : 0.0;
 
   const auto &pp  = parameters.physical;
   row.solids_mass = solids_mass (alpha);
@@ -112,10 +115,7 @@ MonitorRow TwoFluidSolver<dim>::evaluate_monitors () const
   row.solids_speed_max = Utilities::MPI::max (solids_speed, communicator);
 
   // bed height: 95% of the solids lie below it (nodal masses sorted by height)
-  Tensor<1, dim> up;
-  for (unsigned int d = 0; d < dim; ++d)
-    up[d] = -pp.gravity[d];
-  up /= up.norm ();
+  const Tensor<1, dim>                   up = upward_direction<dim> (pp.gravity);
   std::vector<std::pair<double, double>> height_mass;
   const auto                            &mass = transport.lumped_mass ();
   std::vector<types::global_dof_index>   alpha_dofs (alpha_fe.n_dofs_per_cell ());
@@ -197,10 +197,10 @@ void TwoFluidSolver<dim>::make_bubble_analysis ()
   criteria.minimum_diameter       = parameters.bubble_analysis.minimum_diameter;
   criteria.freeboard_boundaries   = {boundary_ids.outlet};
   criteria.open_boundaries        = {boundary_ids.inlet, boundary_ids.outlet};
-  unsigned int vertical           = 0; // the axis gravity points along
+  unsigned int         vertical   = 0; // the axis gravity points along
+  const Tensor<1, dim> up         = upward_direction<dim> (parameters.physical.gravity);
   for (unsigned int d = 1; d < dim; ++d)
-    if (std::abs (parameters.physical.gravity[d]) >
-        std::abs (parameters.physical.gravity[vertical]))
+    if (std::abs (up[d]) > std::abs (up[vertical]))
       vertical = d;
   bubble_analysis = std::make_unique<BubbleAnalysis<dim>> (
       parameters.bubble_analysis, criteria, triangulation, vertical, communicator);

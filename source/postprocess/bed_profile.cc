@@ -19,13 +19,10 @@ using namespace dealii;
 template <int dim>
 void TwoFluidSolver<dim>::evaluate_bed_profile (MonitorRow &row) const
 {
-  const auto    &pp = parameters.physical;
-  Tensor<1, dim> up;
-  for (unsigned int d = 0; d < dim; ++d)
-    up[d] = -pp.gravity[d];
-  up /= up.norm ();
-  const auto         &bed    = parameters.bed_monitors;
-  std::vector<double> planes = parameters.output.probe_heights;
+  const auto          &pp     = parameters.physical;
+  const Tensor<1, dim> up     = upward_direction<dim> (pp.gravity);
+  const auto          &bed    = parameters.bed_monitors;
+  std::vector<double>  planes = parameters.output.probe_heights;
   planes.insert (
       planes.end (), bed.pressure_drop_planes.begin (), bed.pressure_drop_planes.end ());
 

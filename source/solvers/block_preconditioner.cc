@@ -11,17 +11,26 @@ BlockPreconditioner::BlockPreconditioner (const LinearSolverParameters &paramete
 
 void BlockPreconditioner::build_velocity (
     const dealii::TrilinosWrappers::SparseMatrix &A,
-    const std::vector<std::vector<bool>>         &constant_modes)
+    const std::vector<std::vector<double>>       &near_null_space)
 {
   dealii::TrilinosWrappers::PreconditionAMG::AdditionalData data;
   data.elliptic              = true;
   data.higher_order_elements = true;
   data.smoother_sweeps       = parameters.smoother_sweeps;
   data.aggregation_threshold = parameters.aggregation_threshold;
-  data.constant_modes        = constant_modes;
   Teuchos::ParameterList              ml;
-  std::unique_ptr<Epetra_MultiVector> null_space;
-  data.set_parameters (ml, null_space, A.trilinos_matrix ());
+  std::unique_ptr<Epetra_MultiVector> unused;
+  data.set_parameters (ml, unused, A.trilinos_matrix ());
+  // the near-null space, pre-computed (the translations alone are what deal.II's
+  // constant modes give; rigid rotations added where chosen)
+  const Epetra_Map &rows = A.trilinos_matrix ().RowMap ();
+  null_space = std::make_unique<Epetra_MultiVector> (rows, near_null_space.size ());
+  for (unsigned int m = 0; m < near_null_space.size (); ++m)
+    for (int i = 0; i < rows.NumMyElements (); ++i)
+      (*null_space)[m][i] = near_null_space[m][i];
+  ml.set ("null space: type", "pre-computed");
+  ml.set ("null space: dimension", null_space->NumVectors ());
+  ml.set ("null space: vectors", null_space->Values ());
   if (parameters.smoother == "ILU")
     ml.set ("smoother: type", "ILU");
   else if (parameters.smoother == "block Gauss-Seidel")

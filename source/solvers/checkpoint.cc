@@ -213,6 +213,7 @@ void TwoFluidSolver<dim>::resume_from_checkpoint ()
   MeshParameters coarse     = parameters.mesh;
   coarse.initial_refinement = 0;
   boundary_ids              = read_mesh<dim> (coarse,
+                                 parameters.boundary.moving_wall_name,
                                  parameters.parameter_file_directory,
                                  output,
                                  parameters.physical.gravity,

@@ -28,14 +28,25 @@ void TwoFluidSolver<dim>::make_flow_constraints (const double at_time)
   flow_constraints.clear ();
   flow_constraints.reinit (relevant);
   DoFTools::make_hanging_node_constraints (flow_dof_handler, flow_constraints);
+  if (ids.periodic_low != BoundaryIds::none)
+    DoFTools::make_periodicity_constraints (flow_dof_handler,
+                                            ids.periodic_low,
+                                            ids.periodic_high,
+                                            parameters.mesh.periodic_direction,
+                                            flow_constraints);
 
   const auto &bc = parameters.boundary;
+  // the moving wall's velocity for both phases, (u_w, u_w, 0)
+  Vector<double> wall_motion (2 * dim + 1);
+  for (unsigned int d = 0; d < dim; ++d)
+    wall_motion[d] = wall_motion[dim + d] = bc.moving_wall_velocity[d];
   // slip walls: no penetration as constraints unless imposed by Nitsche in the assembly
   auto wall = [&] (const unsigned int   first,
                    const WallCondition  condition,
                    const ComponentMask &mask)
   {
     if (condition == WallCondition::no_slip)
+    {
       VectorTools::interpolate_boundary_values (
           mapping,
           flow_dof_handler,
@@ -43,9 +54,18 @@ void TwoFluidSolver<dim>::make_flow_constraints (const double at_time)
           Functions::ZeroFunction<dim> (2 * dim + 1),
           flow_constraints,
           mask);
+      if (ids.moving_wall != BoundaryIds::none)
+        VectorTools::interpolate_boundary_values (
+            mapping,
+            flow_dof_handler,
+            ids.moving_wall,
+            Functions::ConstantFunction<dim> (wall_motion),
+            flow_constraints,
+            mask);
+    }
     else if (!bc.nitsche)
       VectorTools::compute_no_normal_flux_constraints (
-          flow_dof_handler, first, {ids.wall}, flow_constraints, mapping);
+          flow_dof_handler, first, ids.walls (), flow_constraints, mapping);
   };
   if (manufactured && manufactured->slip_walls ())
   {
@@ -100,11 +120,8 @@ void TwoFluidSolver<dim>::make_flow_constraints (const double at_time)
     // whatever bed sits on the distributor; solids are held at the distributor and
     // retained at the outlet (a grid)
     {
-      Tensor<1, dim> up;
-      for (unsigned int d = 0; d < dim; ++d)
-        up[d] = -parameters.physical.gravity[d];
-      up /= up.norm ();
-      const double          U = inlet_superficial_velocity (at_time);
+      const Tensor<1, dim>  up = upward_direction<dim> (parameters.physical.gravity);
+      const double          U  = inlet_superficial_velocity (at_time);
       const Quadrature<dim> nodes (flow_fe.get_unit_support_points ());
       FEValues<dim>         alpha_at_nodes (mapping, alpha_fe, nodes, update_values);
       std::vector<double>   alpha_values (nodes.size ());
@@ -135,28 +152,56 @@ void TwoFluidSolver<dim>::make_flow_constraints (const double at_time)
       }
     }
     for (const auto id : {ids.inlet, ids.outlet})
-      VectorTools::interpolate_boundary_values (
-          mapping,
-          flow_dof_handler,
-          id,
-          Functions::ZeroFunction<dim> (2 * dim + 1),
-          flow_constraints,
-          solids_mask);
+      if (id != BoundaryIds::none)
+        VectorTools::interpolate_boundary_values (
+            mapping,
+            flow_dof_handler,
+            id,
+            Functions::ZeroFunction<dim> (2 * dim + 1),
+            flow_constraints,
+            solids_mask);
+  }
+  // without an outlet (a closed or periodic domain) p' is fixed to 0 at one node: the
+  // first pressure dof that is not a periodic or hanging copy of another
+  types::global_dof_index pinned = numbers::invalid_dof_index;
+  if (ids.outlet == BoundaryIds::none)
+  {
+    const IndexSet &pressure_owned = flow_owned[1];
+    const auto      offset         = flow_owned[0].size ();
+    for (const auto i : pressure_owned)
+      if (!flow_constraints.is_constrained (offset + i))
+      {
+        pinned = offset + i;
+        break;
+      }
+    pinned = Utilities::MPI::min (pinned, communicator);
+    if (relevant.is_element (pinned))
+      flow_constraints.add_line (pinned);
   }
   flow_constraints.close ();
 
-  // Schur preconditioner: the pressure is fixed where the outlet is traction-free
+  // Schur preconditioner: the pressure is fixed where the outlet is traction-free (or
+  // at the pinned node)
   schur_constraints.clear ();
   schur_constraints.reinit (relevant);
   DoFTools::make_hanging_node_constraints (flow_dof_handler, schur_constraints);
+  if (ids.periodic_low != BoundaryIds::none)
+    DoFTools::make_periodicity_constraints (flow_dof_handler,
+                                            ids.periodic_low,
+                                            ids.periodic_high,
+                                            parameters.mesh.periodic_direction,
+                                            schur_constraints);
   ComponentMask pressure_mask (2 * dim + 1, false);
   pressure_mask.set (2 * dim, true);
-  VectorTools::interpolate_boundary_values (mapping,
-                                            flow_dof_handler,
-                                            ids.outlet,
-                                            Functions::ZeroFunction<dim> (2 * dim + 1),
-                                            schur_constraints,
-                                            pressure_mask);
+  if (ids.outlet != BoundaryIds::none)
+    VectorTools::interpolate_boundary_values (mapping,
+                                              flow_dof_handler,
+                                              ids.outlet,
+                                              Functions::ZeroFunction<dim> (2 * dim + 1),
+                                              schur_constraints,
+                                              pressure_mask);
+  else if (relevant.is_element (pinned))
+    schur_constraints.add_line (pinned);
   schur_constraints.close ();
 }
 

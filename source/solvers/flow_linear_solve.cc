@@ -10,16 +10,60 @@ using namespace dealii;
 template <int dim>
 void TwoFluidSolver<dim>::build_velocity_preconditioner (const double current_dt)
 {
-  ComponentMask velocities (2 * dim + 1, true);
-  velocities.set (2 * dim, false);
-  std::vector<std::vector<bool>> modes;
-  DoFTools::extract_constant_modes (flow_dof_handler, velocities, modes);
-  // the pressure entries are not part of block 0: keep the velocity rows
-  std::vector<std::vector<bool>> velocity_modes (modes.size ());
-  const unsigned int             n_velocity = flow_owned[0].n_elements ();
-  for (unsigned int m = 0; m < modes.size (); ++m)
-    velocity_modes[m].assign (modes[m].begin (), modes[m].begin () + n_velocity);
-  preconditioner->build_velocity (flow_matrix.block (0, 0), velocity_modes);
+  // near-null space of the velocity block: per phase, the translation of each component
+  // and, with `rotation modes`, the rigid rotations about the mesh centre (the modes a
+  // slip wall leaves almost free: a rotation in a cylinder costs only its axial shear)
+  const IndexSet    &owned       = flow_owned[0];
+  const unsigned int n_rotations = parameters.linear_solver.rotation_modes ? (dim == 2 ? 1 : 3) : 0;
+  const unsigned int per_phase   = dim + n_rotations;
+  std::vector<std::vector<double>> modes (2 * per_phase,
+                                          std::vector<double> (owned.n_elements (), 0.0));
+  Point<dim> lower, upper;
+  for (unsigned int d = 0; d < dim; ++d)
+  {
+    lower[d] = std::numeric_limits<double>::max ();
+    upper[d] = -lower[d];
+  }
+  for (const auto &cell : triangulation.active_cell_iterators ())
+    if (cell->is_locally_owned ())
+      for (const auto v : cell->vertex_indices ())
+        for (unsigned int d = 0; d < dim; ++d)
+        {
+          lower[d] = std::min (lower[d], cell->vertex (v)[d]);
+          upper[d] = std::max (upper[d], cell->vertex (v)[d]);
+        }
+  Point<dim> centre;
+  for (unsigned int d = 0; d < dim; ++d)
+    centre[d] = 0.5 * (Utilities::MPI::min (lower[d], communicator) +
+                       Utilities::MPI::max (upper[d], communicator));
+  const Quadrature<dim> nodes (flow_fe.get_unit_support_points ());
+  FEValues<dim>         node_values (mapping, flow_fe, nodes, update_quadrature_points);
+  std::vector<types::global_dof_index> dofs (flow_fe.n_dofs_per_cell ());
+  for (const auto &cell : flow_dof_handler.active_cell_iterators ())
+    if (cell->is_locally_owned ())
+    {
+      cell->get_dof_indices (dofs);
+      node_values.reinit (cell);
+      for (unsigned int i = 0; i < dofs.size (); ++i)
+      {
+        const unsigned int c = flow_fe.system_to_component_index (i).first;
+        if (c >= 2 * dim || !owned.is_element (dofs[i]))
+          continue;
+        const auto         row   = owned.index_within_set (dofs[i]);
+        const unsigned int phase = c / dim, d = c % dim;
+        modes[phase * per_phase + d][row] = 1.0;
+        const Tensor<1, dim> x = node_values.quadrature_point (i) - centre;
+        if (n_rotations == 1) // (-y, x)
+          modes[phase * per_phase + dim][row] = d == 0 ? -x[1] : x[0];
+        else if (n_rotations == 3) // e_a x x
+          for (unsigned int a = 0; a < 3; ++a)
+          {
+            const unsigned int b = (a + 1) % 3, e = (a + 2) % 3;
+            modes[phase * per_phase + dim + a][row] = d == b ? -x[e] : d == e ? x[b] : 0.0;
+          }
+      }
+    }
+  preconditioner->build_velocity (flow_matrix.block (0, 0), modes);
   solves_since_build     = 0;
   iterations_after_build = 0;
   dt_at_build            = current_dt;

@@ -102,6 +102,7 @@ void TwoFluidSolver<dim>::initialize ()
   else
   {
     boundary_ids = read_mesh<dim> (parameters.mesh,
+                                   parameters.boundary.moving_wall_name,
                                    parameters.parameter_file_directory,
                                    folder,
                                    parameters.physical.gravity,
@@ -156,6 +157,12 @@ void TwoFluidSolver<dim>::setup_dofs ()
   alpha_constraints.clear ();
   alpha_constraints.reinit (alpha_relevant);
   DoFTools::make_hanging_node_constraints (alpha_dof_handler, alpha_constraints);
+  if (boundary_ids.periodic_low != BoundaryIds::none)
+    DoFTools::make_periodicity_constraints (alpha_dof_handler,
+                                            boundary_ids.periodic_low,
+                                            boundary_ids.periodic_high,
+                                            parameters.mesh.periodic_direction,
+                                            alpha_constraints);
   alpha_constraints.close ();
   alpha.reinit (alpha_dof_handler.locally_owned_dofs (), alpha_relevant, communicator);
   alpha_old.reinit (alpha);
@@ -217,10 +224,31 @@ void TwoFluidSolver<dim>::setup_dofs ()
   preconditioner->schur_builds    = schur_builds;
   preconditioner->set_coupling (flow_matrix.block (0, 1));
 
-  double h = std::numeric_limits<double>::max ();
+  double         h = std::numeric_limits<double>::max (), normal_motion = 0;
+  Tensor<1, dim> wall_motion;
+  for (unsigned int d = 0; d < dim; ++d)
+    wall_motion[d] = parameters.boundary.moving_wall_velocity[d];
+  FEFaceValues<dim> face_values (
+      mapping, alpha_fe, QGauss<dim - 1> (2), update_normal_vectors);
   for (const auto &cell : triangulation.active_cell_iterators ())
     if (cell->is_locally_owned ())
+    {
       h = std::min (h, cell->minimum_vertex_distance ());
+      for (const auto f : cell->face_indices ())
+        if (cell->face (f)->at_boundary () &&
+            cell->face (f)->boundary_id () == boundary_ids.moving_wall)
+        {
+          face_values.reinit (cell, f);
+          for (const auto &n : face_values.get_normal_vectors ())
+            normal_motion = std::max (normal_motion, std::abs (wall_motion * n));
+        }
+    }
+  require (Utilities::MPI::max (normal_motion, communicator) <=
+               1e-8 * std::max (wall_motion.norm (), 1e-300),
+           "boundary conditions/moving wall velocity",
+           "must be tangential to the moving wall (it has a normal component of " +
+               std::to_string (Utilities::MPI::max (normal_motion, communicator)) +
+               " m/s)");
   min_node_spacing = Utilities::MPI::min (h, communicator) / 2.0;
 
   if (!initialized) // adaptations: the cell count is in monitors.csv
@@ -232,11 +260,8 @@ void TwoFluidSolver<dim>::setup_dofs ()
 template <int dim>
 void TwoFluidSolver<dim>::set_initial_state ()
 {
-  const auto    &ic = parameters.initial;
-  Tensor<1, dim> up;
-  for (unsigned int d = 0; d < dim; ++d)
-    up[d] = -parameters.physical.gravity[d];
-  up /= up.norm ();
+  const auto          &ic = parameters.initial;
+  const Tensor<1, dim> up = upward_direction<dim> (parameters.physical.gravity);
 
   // solids fraction at the vertices (Q1 nodes)
   const Point<dim>                       origin;

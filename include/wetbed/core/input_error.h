@@ -1,5 +1,7 @@
 #pragma once
 
+#include <deal.II/base/tensor.h>
+
 #include <stdexcept>
 #include <string>
 
@@ -31,4 +33,7 @@ inline void require_positive (const double value, const std::string &where)
 {
   require (value > 0.0, where, "must be > 0 (got " + std::to_string (value) + ")");
 }
+
+/** Three comma-separated numbers; an InputError naming `where` otherwise. */
+dealii::Tensor<1, 3> parse_vector (const std::string &text, const std::string &where);
 } // namespace wetbed

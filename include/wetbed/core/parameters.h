@@ -4,9 +4,11 @@
 #include <deal.II/base/tensor.h>
 #include <wetbed/core/adaptive_refinement_parameters.h>
 #include <wetbed/core/bed_monitor_parameters.h>
+#include <wetbed/core/boundary_condition_parameters.h>
 #include <wetbed/core/bubble_analysis_parameters.h>
 #include <wetbed/core/checkpoint_parameters.h>
 #include <wetbed/core/kinetic_theory_parameters.h>
+#include <wetbed/core/mesh_parameters.h>
 #include <wetbed/core/spectrum_parameters.h>
 #include <wetbed/core/wet_particle_parameters.h>
 
@@ -14,19 +16,6 @@
 
 namespace wetbed
 {
-/** `subsection mesh`: the gmsh geometry and how its physical groups are used. */
-struct MeshParameters
-{
-  std::string  file;               // .geo (meshed with gmsh at start) or .msh
-  unsigned int initial_refinement; // uniform refinements after reading
-  std::string  inlet_name, outlet_name, wall_name;
-  bool         cylindrical_wall; // attach a cylinder manifold (axis = gravity) to walls
-  unsigned int mapping_degree;
-
-  static void declare_parameters (dealii::ParameterHandler &prm);
-  void        parse_parameters (dealii::ParameterHandler &prm);
-};
-
 /** `subsection physical properties`: both phases, gravity, packing limit. */
 struct PhysicalProperties
 {
@@ -39,6 +28,26 @@ struct PhysicalProperties
   static void declare_parameters (dealii::ParameterHandler &prm);
   void        parse_parameters (dealii::ParameterHandler &prm);
 };
+
+/**
+ * The unit vector against gravity in the space of the mesh (the in-plane part in 2D);
+ * where gravity has no component there (a 2D mesh lying flat, gravity along z) the
+ * last axis.
+ */
+template <int dim>
+dealii::Tensor<1, dim> upward_direction (const dealii::Tensor<1, 3> &gravity)
+{
+  dealii::Tensor<1, dim> up;
+  for (unsigned int d = 0; d < dim; ++d)
+    up[d] = -gravity[d];
+  if (up.norm () <= 1e-12 * gravity.norm ())
+  {
+    up          = dealii::Tensor<1, dim> ();
+    up[dim - 1] = 1.0;
+    return up;
+  }
+  return up / up.norm ();
+}
 
 /** `subsection solids stress`: the rheology of the particle phase. */
 struct SolidsStressParameters
@@ -53,29 +62,6 @@ struct SolidsStressParameters
 
   static void declare_parameters (dealii::ParameterHandler &prm);
   void        parse_parameters (dealii::ParameterHandler &prm, double maximum_packing);
-};
-
-enum class WallCondition
-{
-  no_slip,
-  free_slip,
-  partial_slip,
-  johnson_jackson
-};
-
-/** `subsection boundary conditions`. */
-struct BoundaryConditionParameters
-{
-  std::string   inlet_superficial_velocity; // function of t (m/s)
-  WallCondition gas_wall, solids_wall;
-  double        solids_wall_friction; // Robin coefficient, kg m^-2 s^-1 (partial slip)
-  bool          nitsche;              // weak no-penetration on slip walls (else strong)
-  double        nitsche_penalty;      // gamma_0
-  bool          hold_solids;          // u_s held everywhere (fixed bed, frozen shear)
-  std::string   held_solids_velocity; // u_s(x, y, z, t) where held, ';'-separated
-
-  static void declare_parameters (dealii::ParameterHandler &prm);
-  void        parse_parameters (dealii::ParameterHandler &prm);
 };
 
 /** `subsection initial conditions`. */
@@ -114,6 +100,7 @@ struct LinearSolverParameters
   std::string  smoother;
   std::string  inner_solves; // V-cycle (default) or exact (diagnosis of the iterations)
   unsigned int smoother_sweeps;
+  bool         rotation_modes; // rigid rotations in the velocity AMG's near-null space
   double       aggregation_threshold;
   double       rebuild_growth; // rebuild the AMG when iterations grow by this factor
   unsigned int rebuild_interval;

@@ -8,6 +8,9 @@
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
 
+#include <Epetra_MultiVector.h>
+
+#include <memory>
 #include <vector>
 
 namespace wetbed
@@ -27,9 +30,11 @@ public:
 
   BlockPreconditioner (const LinearSolverParameters &parameters);
 
-  /** Builds (or rebuilds) the velocity hierarchy from the current A. */
+  /** Builds (or rebuilds) the velocity hierarchy from the current A with the given
+   * near-null space: one vector per mode, each with the locally owned velocity rows in
+   * order (translations of each velocity component, and rigid rotations if chosen). */
   void build_velocity (const dealii::TrilinosWrappers::SparseMatrix &velocity_matrix,
-                       const std::vector<std::vector<bool>>         &constant_modes);
+                       const std::vector<std::vector<double>>       &near_null_space);
   /** Builds the Schur hierarchy from L_c. */
   void build_schur (const dealii::TrilinosWrappers::SparseMatrix &schur_matrix);
   void set_coupling (const dealii::TrilinosWrappers::SparseMatrix &gradient_block)
@@ -50,5 +55,6 @@ private:
   mutable dealii::SolverControl                                   direct_control;
   mutable std::unique_ptr<dealii::TrilinosWrappers::SolverDirect> velocity_direct;
   mutable dealii::TrilinosWrappers::MPI::Vector                   velocity_tmp;
+  std::unique_ptr<Epetra_MultiVector> null_space; // ML keeps a pointer to its values
 };
 } // namespace wetbed

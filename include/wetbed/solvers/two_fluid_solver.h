@@ -80,6 +80,11 @@ public:
   };
   Errors compute_errors () const;
 
+  /** The fields at the points, each u_g (dim), u_s (dim), p', alpha_s, Theta; NaN
+   * outside the mesh (source/postprocess/point_sampling.cc); collective. */
+  std::vector<std::vector<double>>
+  sample (const std::vector<dealii::Point<dim>> &points) const;
+
   const MonitorRow &last_monitors () const { return monitors.last (); }
   double            current_time () const { return time; }
   unsigned int      n_cells () const { return triangulation.n_global_active_cells (); }

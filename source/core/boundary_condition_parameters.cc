@@ -1,0 +1,133 @@
+#include <wetbed/core/boundary_condition_parameters.h>
+#include <wetbed/core/input_error.h>
+
+#include <deal.II/base/function_parser.h>
+
+namespace wetbed
+{
+using dealii::ParameterHandler;
+using namespace dealii::Patterns;
+
+namespace
+{
+WallCondition wall_condition_from_string (const std::string &name)
+{
+  if (name == "no-slip")
+    return WallCondition::no_slip;
+  if (name == "free-slip")
+    return WallCondition::free_slip;
+  if (name == "Johnson-Jackson")
+    return WallCondition::johnson_jackson;
+  return WallCondition::partial_slip;
+}
+} // namespace
+
+void BoundaryConditionParameters::declare_parameters (ParameterHandler &prm)
+{
+  prm.enter_subsection ("boundary conditions");
+  prm.declare_entry (
+      "inlet superficial velocity",
+      "0.8",
+      Anything (),
+      "Superficial gas velocity U at the inlet (m/s), a function of t; the "
+      "gas enters at U/alpha_g with the local gas fraction "
+      "(muparser syntax, e.g. 'min(0.8, 0.2*t)').");
+  prm.declare_entry ("gas wall condition",
+                     "no-slip",
+                     Selection ("no-slip|free-slip"),
+                     "Gas velocity condition on walls.");
+  prm.declare_entry ("solids wall condition",
+                     "free-slip",
+                     Selection ("no-slip|free-slip|partial-slip|Johnson-Jackson"),
+                     "Solids tangential condition on walls (no penetration always); "
+                     "Johnson-Jackson needs solids stress/model = kinetic theory.");
+  prm.declare_entry ("solids wall friction",
+                     "0",
+                     Double (0),
+                     "Robin coefficient C (kg m^-2 s^-1) of the partial-slip traction "
+                     "-C u_slip.");
+  prm.declare_entry ("no-penetration",
+                     "strong",
+                     Selection ("Nitsche|strong"),
+                     "How u.n = 0 is imposed on slip walls (free-slip, partial-slip, "
+                     "Johnson-Jackson): symmetric Nitsche (weak, with the mapped "
+                     "normal at the quadrature points) or strong no-normal-flux "
+                     "constraints at the nodes. Nitsche runs the 2D bed; on curved 3D "
+                     "walls its steady MMS solve does not converge yet.");
+  prm.declare_entry ("Nitsche penalty",
+                     "10",
+                     Double (),
+                     "gamma_0 of the Nitsche penalty gamma_0 (degree + 1)^2 mu*/h.");
+  prm.declare_entry ("hold solids",
+                     "false",
+                     Bool (),
+                     "Hold the solids velocity at 'held solids velocity' everywhere (a "
+                     "fixed bed, e.g. the Ergun test, or a frozen shear); alpha_s is "
+                     "then not transported, Theta still evolves.");
+  prm.declare_entry ("held solids velocity",
+                     "0; 0; 0",
+                     Anything (),
+                     "u_s (m/s) where solids are held: three ';'-separated expressions "
+                     "in x, y, z, t (muparser); in 2D the third is ignored.");
+  prm.declare_entry ("moving wall",
+                     "",
+                     Anything (),
+                     "Physical group name of a wall that slides tangentially with "
+                     "'moving wall velocity' (a shear cell, a Couette cell): the wall "
+                     "conditions above apply to it relative to its motion. Empty: none.");
+  prm.declare_entry ("moving wall velocity",
+                     "0, 0, 0",
+                     Anything (),
+                     "Velocity of the moving wall (m/s), three comma-separated "
+                     "components (the third ignored in 2D); it must be tangential to "
+                     "the wall.");
+  prm.leave_subsection ();
+}
+
+void BoundaryConditionParameters::parse_parameters (ParameterHandler &prm)
+{
+  prm.enter_subsection ("boundary conditions");
+  inlet_superficial_velocity = prm.get ("inlet superficial velocity");
+  gas_wall             = wall_condition_from_string (prm.get ("gas wall condition"));
+  solids_wall          = wall_condition_from_string (prm.get ("solids wall condition"));
+  solids_wall_friction = prm.get_double ("solids wall friction");
+  hold_solids          = prm.get_bool ("hold solids");
+  nitsche              = prm.get ("no-penetration") == "Nitsche";
+  nitsche_penalty      = prm.get_double ("Nitsche penalty");
+  held_solids_velocity = prm.get ("held solids velocity");
+  moving_wall_name     = prm.get ("moving wall");
+  moving_wall_velocity = parse_vector (prm.get ("moving wall velocity"),
+                                       "boundary conditions/moving wall velocity");
+  prm.leave_subsection ();
+  try
+  {
+    dealii::FunctionParser<3> f (3);
+    f.initialize ("x,y,z,t", held_solids_velocity, {}, true);
+    (void)f.value (dealii::Point<3> (), 0);
+  }
+  catch (...)
+  {
+    throw InputError ("boundary conditions/held solids velocity",
+                      "'" + held_solids_velocity +
+                          "' is not three ';'-separated expressions in x, y, z, t");
+  }
+  try
+  {
+    dealii::FunctionParser<1> f (1);
+    f.initialize ("t", inlet_superficial_velocity, {});
+    (void)f.value (dealii::Point<1> (0.0));
+  }
+  catch (...)
+  {
+    throw InputError ("boundary conditions/inlet superficial velocity",
+                      "'" + inlet_superficial_velocity +
+                          "' is not a valid expression in t");
+  }
+  require (nitsche_penalty >= 1.0,
+           "boundary conditions/Nitsche penalty",
+           "must be >= 1 (the symmetric form needs a large enough penalty)");
+  require (solids_wall != WallCondition::partial_slip || solids_wall_friction > 0,
+           "boundary conditions/solids wall friction",
+           "must be > 0 for a partial-slip wall");
+}
+} // namespace wetbed
