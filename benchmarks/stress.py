@@ -131,6 +131,8 @@ def record(label, name, folder, code, wall):
     elif code == 3 and result["report"]:
         reason = open(os.path.join(folder, "failure_report.txt")).read().splitlines()
         result["outcome"] = "stopped cleanly (" + (reason[0][:60] if reason else "report") + ")"
+    elif code == 4 or (code < 0 and label.startswith("long")):
+        result["outcome"] = "interrupted (continue it with --long --only long)"
     else:
         result["outcome"] = f"CRASHED (exit {code})"
     with open(os.path.join(work, name + ".json"), "w") as f:
