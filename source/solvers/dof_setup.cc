@@ -1,0 +1,155 @@
+#include <wetbed/core/input_error.h>
+#include <wetbed/solvers/two_fluid_solver.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/dofs/dof_renumbering.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/lac/block_sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
+
+#include <algorithm>
+#include <limits>
+
+/*
+ * The degrees of freedom of a mesh: the flow (u_g, u_s | p') in two blocks, the alpha_s
+ * and Theta space, their constraints (hanging nodes, periodicity) and sparsity, the
+ * transport operator, fresh preconditioners, and the checks that need the mesh.
+ */
+namespace wetbed
+{
+using namespace dealii;
+
+template <int dim>
+void TwoFluidSolver<dim>::setup_dofs ()
+{
+  TimerOutput::Scope scope (timer, "setup");
+  flow_dof_handler.distribute_dofs (flow_fe);
+  std::vector<unsigned int> block_of_component (2 * dim + 1, 0);
+  block_of_component[2 * dim] = 1;
+  DoFRenumbering::component_wise (flow_dof_handler, block_of_component);
+  const std::vector<types::global_dof_index> dofs_per_block =
+      DoFTools::count_dofs_per_fe_block (flow_dof_handler, block_of_component);
+  const IndexSet owned    = flow_dof_handler.locally_owned_dofs ();
+  const IndexSet relevant = DoFTools::extract_locally_relevant_dofs (flow_dof_handler);
+  flow_owned              = {
+                   owned.get_view (0, dofs_per_block[0]),
+                   owned.get_view (dofs_per_block[0], dofs_per_block[0] + dofs_per_block[1])};
+  flow_relevant = {
+      relevant.get_view (0, dofs_per_block[0]),
+      relevant.get_view (dofs_per_block[0], dofs_per_block[0] + dofs_per_block[1])};
+
+  alpha_dof_handler.distribute_dofs (alpha_fe);
+
+  // the solids fraction first: the inlet constraints read it
+  const IndexSet alpha_relevant =
+      DoFTools::extract_locally_relevant_dofs (alpha_dof_handler);
+  alpha_constraints.clear ();
+  alpha_constraints.reinit (alpha_relevant);
+  DoFTools::make_hanging_node_constraints (alpha_dof_handler, alpha_constraints);
+  if (boundary_ids.periodic_low != BoundaryIds::none)
+    DoFTools::make_periodicity_constraints (alpha_dof_handler,
+                                            boundary_ids.periodic_low,
+                                            boundary_ids.periodic_high,
+                                            parameters.mesh.periodic_direction,
+                                            alpha_constraints);
+  alpha_constraints.close ();
+  alpha.reinit (alpha_dof_handler.locally_owned_dofs (), alpha_relevant, communicator);
+  alpha_old.reinit (alpha);
+  alpha_old2.reinit (alpha);
+  // the granular temperature lives on the alpha_s space (Q1, same DoFs)
+  theta.reinit (alpha);
+  theta_old.reinit (alpha);
+  theta_old2.reinit (alpha);
+  make_flow_constraints (0.0);
+
+  {
+    Table<2, DoFTools::Coupling> coupling (2 * dim + 1, 2 * dim + 1);
+    for (unsigned int c = 0; c < 2 * dim + 1; ++c)
+      for (unsigned int d = 0; d < 2 * dim + 1; ++d)
+        coupling[c][d] = DoFTools::always; // (p,p) kept for constrained pressure rows
+    BlockDynamicSparsityPattern dsp (flow_relevant);
+    DoFTools::make_sparsity_pattern (
+        flow_dof_handler, coupling, dsp, flow_constraints, false);
+    SparsityTools::distribute_sparsity_pattern (dsp, owned, communicator, relevant);
+    flow_matrix.reinit (flow_owned, dsp, communicator);
+  }
+  {
+    Table<2, DoFTools::Coupling> coupling (2 * dim + 1, 2 * dim + 1);
+    for (unsigned int c = 0; c < 2 * dim + 1; ++c)
+      for (unsigned int d = 0; d < 2 * dim + 1; ++d)
+        coupling[c][d] =
+            (c == 2 * dim && d == 2 * dim) ? DoFTools::always : DoFTools::none;
+    BlockDynamicSparsityPattern dsp (flow_relevant);
+    DoFTools::make_sparsity_pattern (
+        flow_dof_handler, coupling, dsp, schur_constraints, false);
+    SparsityTools::distribute_sparsity_pattern (dsp, owned, communicator, relevant);
+    schur_matrix.reinit (flow_owned, dsp, communicator);
+  }
+  flow_rhs.reinit (flow_owned, communicator);
+  flow_solution.reinit (flow_owned, flow_relevant, communicator);
+  flow_old.reinit (flow_solution);
+  flow_old2.reinit (flow_solution);
+
+  transport.setup (alpha_dof_handler, mapping, alpha_constraints, alpha);
+
+  {
+    const IndexSet         alpha_owned = alpha_dof_handler.locally_owned_dofs ();
+    DynamicSparsityPattern dsp (alpha_relevant);
+    DoFTools::make_sparsity_pattern (alpha_dof_handler, dsp, alpha_constraints, false);
+    SparsityTools::distribute_sparsity_pattern (
+        dsp, alpha_owned, communicator, alpha_relevant);
+    correction_matrix.reinit (alpha_owned, alpha_owned, dsp, communicator);
+    compaction_flux_matrix.reinit (alpha_owned, alpha_owned, dsp, communicator);
+    if (kinetic_theory && !parameters.kinetic_theory.algebraic)
+      granular_energy_matrix.reinit (alpha_owned, alpha_owned, dsp, communicator);
+  }
+
+  // a new mesh needs new hierarchies; the build counts go on
+  const unsigned int velocity_builds =
+      preconditioner ? preconditioner->velocity_builds : 0;
+  const unsigned int schur_builds = preconditioner ? preconditioner->schur_builds : 0;
+  preconditioner = std::make_unique<BlockPreconditioner> (parameters.linear_solver);
+  preconditioner->velocity_builds = velocity_builds;
+  preconditioner->schur_builds    = schur_builds;
+  preconditioner->set_coupling (flow_matrix.block (0, 1));
+
+  double         h = std::numeric_limits<double>::max (), normal_motion = 0;
+  Tensor<1, dim> wall_motion;
+  for (unsigned int d = 0; d < dim; ++d)
+    wall_motion[d] = parameters.boundary.moving_wall_velocity[d];
+  FEFaceValues<dim> face_values (
+      mapping, alpha_fe, QGauss<dim - 1> (2), update_normal_vectors);
+  for (const auto &cell : triangulation.active_cell_iterators ())
+    if (cell->is_locally_owned ())
+    {
+      h = std::min (h, cell->minimum_vertex_distance ());
+      for (const auto f : cell->face_indices ())
+        if (cell->face (f)->at_boundary () &&
+            cell->face (f)->boundary_id () == boundary_ids.moving_wall)
+        {
+          face_values.reinit (cell, f);
+          for (const auto &n : face_values.get_normal_vectors ())
+            normal_motion = std::max (normal_motion, std::abs (wall_motion * n));
+        }
+    }
+  require (Utilities::MPI::max (normal_motion, communicator) <=
+               1e-8 * std::max (wall_motion.norm (), 1e-300),
+           "boundary conditions/moving wall velocity",
+           "must be tangential to the moving wall (it has a normal component of " +
+               std::to_string (Utilities::MPI::max (normal_motion, communicator)) +
+               " m/s)");
+  min_node_spacing = Utilities::MPI::min (h, communicator) / 2.0;
+
+  if (!initialized) // adaptations: the cell count is in monitors.csv
+    pcout << "Mesh: " << triangulation.n_global_active_cells () << " cells; flow DoFs "
+          << dofs_per_block[0] << " (u_g, u_s) + " << dofs_per_block[1]
+          << " (p'), alpha_s DoFs " << alpha_dof_handler.n_dofs () << std::endl;
+}
+
+template void TwoFluidSolver<2>::setup_dofs ();
+template void TwoFluidSolver<3>::setup_dofs ();
+} // namespace wetbed
