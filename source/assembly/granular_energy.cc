@@ -80,7 +80,8 @@ bool TwoFluidSolver<dim>::update_granular_temperature (const BDFCoefficients &bd
       parameters.boundary.solids_wall == WallCondition::johnson_jackson;
   const double residual_alpha = 1e-6;
   // verification runs: the manufactured volume and boundary sources
-  const bool manufactured_theta =
+  const Tensor<1, dim> wall_velocity = moving_wall_velocity ();
+  const bool           manufactured_theta =
       manufactured && manufactured->has_granular_temperature ();
 
   TrilinosWrappers::MPI::Vector rhs (alpha_dof_handler.locally_owned_dofs (),
@@ -210,10 +211,10 @@ bool TwoFluidSolver<dim>::update_granular_temperature (const BDFCoefficients &bd
             continue;
           const bool wall_face =
               johnson_jackson_walls && boundary_ids.is_wall (face->boundary_id ());
-          Tensor<1, dim> wall_motion; // the slip is relative to a moving wall
-          if (face->boundary_id () == boundary_ids.moving_wall)
-            for (unsigned int d = 0; d < dim; ++d)
-              wall_motion[d] = parameters.boundary.moving_wall_velocity[d];
+          // the slip is relative to a moving wall
+          const Tensor<1, dim> wall_motion =
+              face->boundary_id () == boundary_ids.moving_wall ? wall_velocity
+                                                               : Tensor<1, dim> ();
           if (manufactured_theta)
           {
             theta_face.reinit (cell, face);

@@ -84,8 +84,9 @@ void TwoFluidSolver<dim>::assemble_flow_system (const BDFCoefficients &bdf,
   std::vector<Tensor<1, dim>> grad_phi (n_dofs);
 
   // verification runs keep the wall conditions only with slip walls (else: exact values)
-  const bool slip_walls = !manufactured || manufactured->slip_walls ();
-  const bool partial_slip =
+  const bool           slip_walls    = !manufactured || manufactured->slip_walls ();
+  const Tensor<1, dim> wall_velocity = moving_wall_velocity ();
+  const bool           partial_slip =
       (parameters.boundary.solids_wall == WallCondition::partial_slip ||
        parameters.boundary.solids_wall == WallCondition::johnson_jackson) &&
       slip_walls;
@@ -366,11 +367,7 @@ void TwoFluidSolver<dim>::assemble_flow_system (const BDFCoefficients &bdf,
         // the slip is relative to a moving wall: C P_t (u - u_w), P_t u_w on the rhs
         Tensor<1, dim> wall_motion;
         if (moving_face && wall_friction_face)
-        {
-          for (unsigned int d = 0; d < dim; ++d)
-            wall_motion[d] = parameters.boundary.moving_wall_velocity[d];
-          wall_motion -= (wall_motion * n) * n;
-        }
+          wall_motion = wall_velocity - (wall_velocity * n) * n;
         Tensor<1, dim> traction[2];
         if (traction_face)
         {

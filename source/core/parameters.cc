@@ -251,12 +251,13 @@ void LinearSolverParameters::declare_parameters (ParameterHandler &prm)
       "FGMRES iterations than ILU but cheaper ones (2D bed start-up 29 vs "
       "51 per solve, 3D column start-up 145 s vs 229 s); ILU sees the drag "
       "coupling of the two velocities inside a node.");
-  prm.declare_entry ("rotation modes",
-                     "false",
-                     Bool (),
-                     "Give the velocity AMG the rigid rotations of each phase as "
-                     "near-null modes besides the translations of each component (for "
-                     "slip walls on curved boundaries, where a rotation is nearly free).");
+  prm.declare_entry (
+      "rotation modes",
+      "false",
+      Bool (),
+      "Give the velocity AMG the rigid rotations of each phase as "
+      "near-null modes besides the translations of each component (for "
+      "slip walls on curved boundaries, where a rotation is nearly free).");
   prm.declare_entry ("smoother sweeps",
                      "4",
                      Integer (1, 10),

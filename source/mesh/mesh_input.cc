@@ -151,7 +151,7 @@ BoundaryIds read_mesh (const MeshParameters       &parameters,
   {
     std::vector<dealii::GridTools::PeriodicFacePair<
         typename dealii::parallel::distributed::Triangulation<dim>::cell_iterator>>
-        pairs;
+                      pairs;
     const std::string mismatch = "the faces of '" + parameters.periodic_high_name +
                                  "' are not those of '" + parameters.periodic_low_name +
                                  "' translated along the periodic direction";

@@ -49,13 +49,7 @@ void TwoFluidSolver<dim>::setup_dofs ()
       DoFTools::extract_locally_relevant_dofs (alpha_dof_handler);
   alpha_constraints.clear ();
   alpha_constraints.reinit (alpha_relevant);
-  DoFTools::make_hanging_node_constraints (alpha_dof_handler, alpha_constraints);
-  if (boundary_ids.periodic_low != BoundaryIds::none)
-    DoFTools::make_periodicity_constraints (alpha_dof_handler,
-                                            boundary_ids.periodic_low,
-                                            boundary_ids.periodic_high,
-                                            parameters.mesh.periodic_direction,
-                                            alpha_constraints);
+  make_mesh_constraints (alpha_dof_handler, alpha_constraints);
   alpha_constraints.close ();
   alpha.reinit (alpha_dof_handler.locally_owned_dofs (), alpha_relevant, communicator);
   alpha_old.reinit (alpha);
@@ -117,11 +111,9 @@ void TwoFluidSolver<dim>::setup_dofs ()
   preconditioner->schur_builds    = schur_builds;
   preconditioner->set_coupling (flow_matrix.block (0, 1));
 
-  double         h = std::numeric_limits<double>::max (), normal_motion = 0;
-  Tensor<1, dim> wall_motion;
-  for (unsigned int d = 0; d < dim; ++d)
-    wall_motion[d] = parameters.boundary.moving_wall_velocity[d];
-  FEFaceValues<dim> face_values (
+  double               h = std::numeric_limits<double>::max (), normal_motion = 0;
+  const Tensor<1, dim> wall_motion = moving_wall_velocity ();
+  FEFaceValues<dim>    face_values (
       mapping, alpha_fe, QGauss<dim - 1> (2), update_normal_vectors);
   for (const auto &cell : triangulation.active_cell_iterators ())
     if (cell->is_locally_owned ())
@@ -150,6 +142,37 @@ void TwoFluidSolver<dim>::setup_dofs ()
           << " (p'), alpha_s DoFs " << alpha_dof_handler.n_dofs () << std::endl;
 }
 
+template <int dim>
+void TwoFluidSolver<dim>::make_mesh_constraints (
+    const DoFHandler<dim> &dof_handler, AffineConstraints<double> &constraints) const
+{
+  DoFTools::make_hanging_node_constraints (dof_handler, constraints);
+  if (boundary_ids.periodic_low != BoundaryIds::none)
+    DoFTools::make_periodicity_constraints (dof_handler,
+                                            boundary_ids.periodic_low,
+                                            boundary_ids.periodic_high,
+                                            parameters.mesh.periodic_direction,
+                                            constraints);
+}
+
+template <int dim>
+Tensor<1, dim> TwoFluidSolver<dim>::moving_wall_velocity () const
+{
+  Tensor<1, dim> velocity;
+  if (boundary_ids.moving_wall != BoundaryIds::none)
+    for (unsigned int d = 0; d < dim; ++d)
+      velocity[d] = parameters.boundary.moving_wall_velocity[d];
+  return velocity;
+}
+
 template void TwoFluidSolver<2>::setup_dofs ();
 template void TwoFluidSolver<3>::setup_dofs ();
+template void
+TwoFluidSolver<2>::make_mesh_constraints (const DoFHandler<2> &,
+                                          AffineConstraints<double> &) const;
+template void
+                      TwoFluidSolver<3>::make_mesh_constraints (const DoFHandler<3> &,
+                                          AffineConstraints<double> &) const;
+template Tensor<1, 2> TwoFluidSolver<2>::moving_wall_velocity () const;
+template Tensor<1, 3> TwoFluidSolver<3>::moving_wall_velocity () const;
 } // namespace wetbed

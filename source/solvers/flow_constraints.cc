@@ -27,19 +27,14 @@ void TwoFluidSolver<dim>::make_flow_constraints (const double at_time)
 
   flow_constraints.clear ();
   flow_constraints.reinit (relevant);
-  DoFTools::make_hanging_node_constraints (flow_dof_handler, flow_constraints);
-  if (ids.periodic_low != BoundaryIds::none)
-    DoFTools::make_periodicity_constraints (flow_dof_handler,
-                                            ids.periodic_low,
-                                            ids.periodic_high,
-                                            parameters.mesh.periodic_direction,
-                                            flow_constraints);
+  make_mesh_constraints (flow_dof_handler, flow_constraints);
 
   const auto &bc = parameters.boundary;
   // the moving wall's velocity for both phases, (u_w, u_w, 0)
-  Vector<double> wall_motion (2 * dim + 1);
+  Vector<double>       wall_motion (2 * dim + 1);
+  const Tensor<1, dim> wall_velocity = moving_wall_velocity ();
   for (unsigned int d = 0; d < dim; ++d)
-    wall_motion[d] = wall_motion[dim + d] = bc.moving_wall_velocity[d];
+    wall_motion[d] = wall_motion[dim + d] = wall_velocity[d];
   // slip walls: no penetration as constraints unless imposed by Nitsche in the assembly
   auto wall = [&] (const unsigned int   first,
                    const WallCondition  condition,
@@ -184,13 +179,7 @@ void TwoFluidSolver<dim>::make_flow_constraints (const double at_time)
   // at the pinned node)
   schur_constraints.clear ();
   schur_constraints.reinit (relevant);
-  DoFTools::make_hanging_node_constraints (flow_dof_handler, schur_constraints);
-  if (ids.periodic_low != BoundaryIds::none)
-    DoFTools::make_periodicity_constraints (flow_dof_handler,
-                                            ids.periodic_low,
-                                            ids.periodic_high,
-                                            parameters.mesh.periodic_direction,
-                                            schur_constraints);
+  make_mesh_constraints (flow_dof_handler, schur_constraints);
   ComponentMask pressure_mask (2 * dim + 1, false);
   pressure_mask.set (2 * dim, true);
   if (ids.outlet != BoundaryIds::none)

@@ -13,12 +13,13 @@ void TwoFluidSolver<dim>::build_velocity_preconditioner (const double current_dt
   // near-null space of the velocity block: per phase, the translation of each component
   // and, with `rotation modes`, the rigid rotations about the mesh centre (the modes a
   // slip wall leaves almost free: a rotation in a cylinder costs only its axial shear)
-  const IndexSet    &owned       = flow_owned[0];
-  const unsigned int n_rotations = parameters.linear_solver.rotation_modes ? (dim == 2 ? 1 : 3) : 0;
-  const unsigned int per_phase   = dim + n_rotations;
+  const IndexSet    &owned = flow_owned[0];
+  const unsigned int n_rotations =
+      parameters.linear_solver.rotation_modes ? (dim == 2 ? 1 : 3) : 0;
+  const unsigned int               per_phase = dim + n_rotations;
   std::vector<std::vector<double>> modes (2 * per_phase,
                                           std::vector<double> (owned.n_elements (), 0.0));
-  Point<dim> lower, upper;
+  Point<dim>                       lower, upper;
   for (unsigned int d = 0; d < dim; ++d)
   {
     lower[d] = std::numeric_limits<double>::max ();
@@ -52,14 +53,16 @@ void TwoFluidSolver<dim>::build_velocity_preconditioner (const double current_dt
         const auto         row   = owned.index_within_set (dofs[i]);
         const unsigned int phase = c / dim, d = c % dim;
         modes[phase * per_phase + d][row] = 1.0;
-        const Tensor<1, dim> x = node_values.quadrature_point (i) - centre;
+        const Tensor<1, dim> x            = node_values.quadrature_point (i) - centre;
         if (n_rotations == 1) // (-y, x)
           modes[phase * per_phase + dim][row] = d == 0 ? -x[1] : x[0];
         else if (n_rotations == 3) // e_a x x
           for (unsigned int a = 0; a < 3; ++a)
           {
             const unsigned int b = (a + 1) % 3, e = (a + 2) % 3;
-            modes[phase * per_phase + dim + a][row] = d == b ? -x[e] : d == e ? x[b] : 0.0;
+            modes[phase * per_phase + dim + a][row] = d == b   ? -x[e]
+                                                      : d == e ? x[b]
+                                                               : 0.0;
           }
       }
     }

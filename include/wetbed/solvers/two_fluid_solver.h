@@ -180,7 +180,13 @@ private:
   std::string describe_failed_state (double dt) const;
 
   double inlet_superficial_velocity (double t) const;
-  double solids_mass (const AlphaVector &alpha) const;
+  /** Hanging-node and periodicity constraints of a space on this mesh, into
+   * `constraints` (not closed; source/solvers/dof_setup.cc). */
+  void make_mesh_constraints (const dealii::DoFHandler<dim>     &dof_handler,
+                              dealii::AffineConstraints<double> &constraints) const;
+  /** The velocity of the moving wall in the mesh's dimensions (zero without one). */
+  dealii::Tensor<1, dim> moving_wall_velocity () const;
+  double                 solids_mass (const AlphaVector &alpha) const;
   /** (height, alpha_s) of the discrete rest state at the given vertex heights, top down.
    */
   std::vector<std::pair<double, double>>
