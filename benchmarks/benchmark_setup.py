@@ -42,10 +42,39 @@ end
     return prm, folder, os.path.join(work, name + ".log")
 
 
-def summarize_run(folder, log, start_up):
+def run_resumable(command, folder, log, wall_file, resumable=True, env=None):
+    """Runs COMMAND (a wetbed call, optionally under mpirun) with its screen output in LOG.
+    With RESUMABLE, a run that has a checkpoint in FOLDER and a WALL_FILE from an earlier
+    piece is continued (`--resume`, the log appended) and WALL_FILE keeps the wall time of
+    all pieces, updated every 5 s so that an interrupted piece still counts; a run whose
+    log already says `Finished:` is not started again. Returns (exit code, total wall s)."""
+    import subprocess
+    import time
+    if resumable and os.path.exists(wall_file) and os.path.exists(log) and "Finished:" in open(log).read():
+        return 0, float(open(wall_file).read())
+    resume = resumable and os.path.isdir(os.path.join(folder, "checkpoint")) and os.path.exists(wall_file)
+    earlier = float(open(wall_file).read()) if resume else 0.0
+    begin = time.time()
+    with open(log, "a" if resume else "w") as out:
+        process = subprocess.Popen(command + (["--resume"] if resume else []),
+                                   stdout=out, stderr=subprocess.STDOUT, env=env)
+        while process.poll() is None:
+            time.sleep(5)
+            if resumable:
+                with open(wall_file, "w") as f:
+                    f.write(str(earlier + time.time() - begin))
+    wall = earlier + time.time() - begin
+    if resumable:
+        with open(wall_file, "w") as f:
+            f.write(str(wall))
+    return process.returncode, wall
+
+
+def summarize_run(folder, log, start_up, wall=None):
     """FI time mean after start_up and over 0.5 s windows, steps, rejected steps, wall
     time, cost per simulated second, FGMRES iterations per step, bounds, mass drift;
-    returns (summary dict, (t, FI) series)."""
+    returns (summary dict, (t, FI) series). WALL (all pieces of a resumed run) replaces
+    the wall time of the log's last piece."""
     data = list(csv.DictReader(open(os.path.join(folder, "monitors.csv"))))
     t = [float(r["time"]) for r in data]
     dt = [float(r["time_step"]) for r in data]
@@ -65,6 +94,8 @@ def summarize_run(folder, log, start_up):
     steps, rejected, wall, per_second = (
         (int(fin.group(1)), int(fin.group(2)), float(fin.group(3)), float(fin.group(4))) if fin
         else (len(data) - 1, int(data[-1]["rejected_steps"]), float("nan"), float("nan")))
+    if wall is not None:
+        steps, wall, per_second = int(float(data[-1]["step"])), wall, wall / max(t[-1], 1e-30)
     summary = {
         "end": t[-1], "finished": bool(fin), "mean_fi": mean_fi,
         "fi_min_window": min(windows) if windows else float("nan"),

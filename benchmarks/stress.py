@@ -25,10 +25,8 @@ import json
 import math
 import os
 import re
-import subprocess
-import time
 
-from benchmark_setup import read_case, replace_doc_section, repository_root, write_case
+from benchmark_setup import read_case, replace_doc_section, repository_root, run_resumable, write_case
 
 root = repository_root()
 parser = argparse.ArgumentParser()
@@ -92,23 +90,9 @@ def run(case):
                                   sections + f"subsection checkpoint\n set at end = false\n{checkpoints}end\n",
                                   field_interval=1000)
     command = [os.path.join(root, "build", "wetbed"), prm]
-    pieces = os.path.join(work, name + ".wall")
-    resume = long and os.path.isdir(os.path.join(folder, "checkpoint")) and os.path.exists(pieces)
-    if resume:
-        command.append("--resume")
-    earlier = float(open(pieces).read()) if resume else 0.0
     if ranks > 1:
         command = ["mpirun", "--oversubscribe", "-np", str(ranks)] + command
-    begin = time.time()
-    with open(log, "a" if resume else "w") as out:
-        process = subprocess.Popen(command, stdout=out, stderr=subprocess.STDOUT, env=env)
-        while process.poll() is None:
-            time.sleep(5)
-            if long:
-                with open(pieces, "w") as f:
-                    f.write(str(earlier + time.time() - begin))
-        code = process.returncode
-    wall = earlier + time.time() - begin
+    code, wall = run_resumable(command, folder, log, os.path.join(work, name + ".wall"), long, env)
     record(label, name, folder, code, wall)
 
 

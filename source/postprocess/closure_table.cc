@@ -123,7 +123,8 @@ void write_closure_table (const Parameters                &parameters,
            "wetbed closures reports the kinetic theory: set model = kinetic theory");
   const closures::WetParticles *wet = theory->wet ();
   out << "alpha_s,theta,shear_rate,g0,kinetic_pressure,frictional_pressure,"
-         "kinetic_collisional_viscosity,frictional_viscosity,shear_viscosity,"
+         "kinetic_collisional_viscosity,collisional_viscosity,frictional_viscosity,shear_"
+         "viscosity,"
          "bulk_viscosity,conductivity,dissipation,restitution";
   if (wet)
     out << ",gap,rupture_distance,regime,approach_velocity,wet_pressure,wet_viscosity,"
@@ -135,9 +136,9 @@ void write_closure_table (const Parameters                &parameters,
     const auto s = stress->evaluate ({p.alpha_s, p.theta, p.shear_rate});
     out << p.alpha_s << ',' << p.theta << ',' << p.shear_rate << ',' << c.g0 << ','
         << s.kinetic_pressure << ',' << s.pressure << ',' << c.shear_viscosity << ','
-        << s.frictional_viscosity << ',' << s.shear_viscosity << ',' << s.bulk_viscosity
-        << ',' << c.conductivity << ',' << c.dissipation_factor * std::pow (p.theta, 1.5)
-        << ',' << c.restitution;
+        << c.collisional_viscosity << ',' << s.frictional_viscosity << ','
+        << s.shear_viscosity << ',' << s.bulk_viscosity << ',' << c.conductivity << ','
+        << c.dissipation_factor * std::pow (p.theta, 1.5) << ',' << c.restitution;
     if (wet)
     {
       const auto w =

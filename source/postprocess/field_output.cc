@@ -14,6 +14,10 @@ using namespace dealii;
  * alpha_s space, as the compaction force uses it), Theta (kinetic theory), the drag
  * coefficient beta and the solids shear viscosity mu_s (cell means over the Gauss points,
  * with the local slip, Theta and strain rate), the refinement level and the MPI rank;
+ * with the kinetic theory also the solids shear rate |gamma| = sqrt(2 D_dev:D_dev), the
+ * parts of the solids shear stress mu_i |gamma| (kinetic, collisional, frictional and,
+ * in a wet scene, liquid-bridge) and the collisional dissipation gamma (cell means; the
+ * stress split and dissipation of seed 000's Figs. 9-10);
  * as VTU pieces with a PVTU record and/or as one parallel HDF5 file per output indexed
  * by fields.xdmf (`output/field format`).
  */
@@ -48,11 +52,22 @@ void TwoFluidSolver<dim>::write_fields () const
   if (kinetic_theory)
     data_out.add_data_vector (alpha_dof_handler, theta, "granular_temperature");
 
-  Vector<float> drag_coefficient (triangulation.n_active_cells ()),
-      shear_viscosity (triangulation.n_active_cells ()),
-      level (triangulation.n_active_cells ());
-  const QGauss<dim> quadrature (2);
-  FEValues<dim>     flow_values (
+  const unsigned int n_cells = triangulation.n_active_cells ();
+  Vector<float> drag_coefficient (n_cells), shear_viscosity (n_cells), level (n_cells);
+  // kinetic theory only: shear rate, stress split (kinetic, collisional, frictional,
+  // wet) and collisional dissipation
+  const std::vector<std::string> split_names = {"solids_shear_rate",
+                                                "kinetic_shear_stress",
+                                                "collisional_shear_stress",
+                                                "frictional_shear_stress",
+                                                "wet_shear_stress",
+                                                "collisional_dissipation"};
+  const bool wet_scene = kinetic_theory && kinetic_theory->wet () != nullptr;
+  std::vector<Vector<float>> split (kinetic_theory ? split_names.size () : 0,
+                                    Vector<float> (n_cells));
+  std::vector<double> split_integral (split.size ());
+  const QGauss<dim>   quadrature (2);
+  FEValues<dim>       flow_values (
       mapping, flow_fe, quadrature, update_values | update_gradients | update_JxW_values);
   FEValues<dim> alpha_values (mapping, alpha_fe, quadrature, update_values);
   const FEValuesExtractors::Vector gas (0), solids (dim);
@@ -72,29 +87,46 @@ void TwoFluidSolver<dim>::write_fields () const
       alpha_values.get_function_values (alpha, alpha_q);
       alpha_values.get_function_values (theta, theta_q);
       double integral = 0, viscosity = 0, volume = 0;
+      std::fill (split_integral.begin (), split_integral.end (), 0.0);
       for (unsigned int q = 0; q < quadrature.size (); ++q)
       {
         const SymmetricTensor<2, dim> deviator =
             deviator_tensor<dim> () * symmetrize (grad_u_s[q]);
+        const double shear_rate = std::sqrt (2.0 * deviator * deviator);
+        const double a          = std::max (alpha_q[q], 0.0);
+        const auto   stress     = solids_stress->evaluate ({a, theta_q[q], shear_rate});
+        const double JxW        = flow_values.JxW (q);
         integral +=
-            drag->coefficient (alpha_q[q], (u_g[q] - u_s[q]).norm (), gas_particle) *
-            flow_values.JxW (q);
-        viscosity += solids_stress
-                         ->evaluate ({std::max (alpha_q[q], 0.0),
-                                      theta_q[q],
-                                      std::sqrt (2.0 * deviator * deviator)})
-                         .shear_viscosity *
-                     flow_values.JxW (q);
-        volume += flow_values.JxW (q);
+            drag->coefficient (alpha_q[q], (u_g[q] - u_s[q]).norm (), gas_particle) * JxW;
+        viscosity += stress.shear_viscosity * JxW;
+        volume += JxW;
+        if (kinetic_theory)
+        {
+          const auto   c       = kinetic_theory->evaluate (a, theta_q[q]);
+          const double parts[] = {
+              shear_rate,
+              (c.shear_viscosity - c.collisional_viscosity) * shear_rate,
+              c.collisional_viscosity * shear_rate,
+              stress.frictional_viscosity * shear_rate,
+              stress.wet_viscosity * shear_rate,
+              c.dissipation_factor * std::pow (std::max (theta_q[q], 0.0), 1.5)};
+          for (unsigned int k = 0; k < split.size (); ++k)
+            split_integral[k] += parts[k] * JxW;
+        }
       }
       drag_coefficient (cell->active_cell_index ()) = integral / volume;
       shear_viscosity (cell->active_cell_index ())  = viscosity / volume;
-      level (cell->active_cell_index ())            = cell->level ();
+      for (unsigned int k = 0; k < split.size (); ++k)
+        split[k](cell->active_cell_index ()) = split_integral[k] / volume;
+      level (cell->active_cell_index ()) = cell->level ();
     }
     ++alpha_cell;
   }
   data_out.add_data_vector (drag_coefficient, "drag_coefficient");
   data_out.add_data_vector (shear_viscosity, "solids_shear_viscosity");
+  for (unsigned int k = 0; k < split.size (); ++k)
+    if (split_names[k] != "wet_shear_stress" || wet_scene)
+      data_out.add_data_vector (split[k], split_names[k]);
   data_out.add_data_vector (level, "refinement_level");
   Vector<float> subdomain (triangulation.n_active_cells ());
   subdomain = triangulation.locally_owned_subdomain ();

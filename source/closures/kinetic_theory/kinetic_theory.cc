@@ -45,12 +45,12 @@ KineticTheory::Coefficients KineticTheory::evaluate (const double alpha_s,
   const double t  = std::max (theta, 0.0);
   const double g0 = radial_distribution (a);
   Coefficients c;
-  c.g0              = g0;
-  c.pressure_factor = CollisionalTerms::solids_pressure (a, 1.0, g0, granular);
-  c.shear_viscosity = CollisionalTerms::shear_viscosity (a, t, g0, granular) +
-                      viscosity_law->value (a, t, g0, granular);
-  c.bulk_viscosity = CollisionalTerms::bulk_viscosity (a, t, g0, granular);
-  c.conductivity   = conductivity_law->value (a, t, g0, granular);
+  c.g0                    = g0;
+  c.pressure_factor       = CollisionalTerms::solids_pressure (a, 1.0, g0, granular);
+  c.collisional_viscosity = CollisionalTerms::shear_viscosity (a, t, g0, granular);
+  c.shear_viscosity = c.collisional_viscosity + viscosity_law->value (a, t, g0, granular);
+  c.bulk_viscosity  = CollisionalTerms::bulk_viscosity (a, t, g0, granular);
+  c.conductivity    = conductivity_law->value (a, t, g0, granular);
   c.restitution =
       wet_particles ? wet_particles->restitution (a, t) : granular.restitution;
   c.dissipation_factor =

@@ -35,12 +35,13 @@ public:
   struct Coefficients
   {
     double g0;
-    double pressure_factor;    // P_kin+col / Theta = alpha rho [1 + 2(1+e) alpha g0]
-    double shear_viscosity;    // mu_col + mu_kin (Pa s)
-    double bulk_viscosity;     // lambda_s (Pa s)
-    double conductivity;       // kappa (kg m^-1 s^-1)
-    double dissipation_factor; // gamma / Theta^(3/2)
-    double restitution;        // e in gamma: e_wet in a wet scene, else e_dry
+    double pressure_factor;       // P_kin+col / Theta = alpha rho [1 + 2(1+e) alpha g0]
+    double shear_viscosity;       // mu_col + mu_kin (Pa s)
+    double collisional_viscosity; // mu_col alone (Pa s), for the stress split
+    double bulk_viscosity;        // lambda_s (Pa s)
+    double conductivity;          // kappa (kg m^-1 s^-1)
+    double dissipation_factor;    // gamma / Theta^(3/2)
+    double restitution;           // e in gamma: e_wet in a wet scene, else e_dry
   };
   Coefficients evaluate (double alpha_s, double theta) const;
 
