@@ -87,6 +87,9 @@ elif check == "packed":
     expect(rows[-1]["time"] >= 0.2 - 1e-12, "ran to t = 0.2 s")
     expect(all(r["rejected_steps"] == 0 for r in rows), "no rejected steps")
     bounds_and_mass(rows, 0.61)
+    # momentum budget: without gas flow the distributor carries the whole bed
+    worst = max(abs(r["distributor_support"] - 1) + abs(r["wall_support_solids"]) + abs(r["fluidization_index"]) for r in rows[1:])
+    expect(worst < 1e-3, f"the distributor carries the bed weight (|support - 1| + |walls| + |FI| <= {worst:.1e} < 1e-3)")
 elif check == "hydrostatic":
     # T7a: gas only at rest; p' = p - rho_g g.x must stay zero, no velocity appears
     rows = run("hydrostatic_gas")
@@ -121,6 +124,13 @@ elif check == "ramp":
     held = [r for r in rows if 1.0 < r["time"] <= 1.8]
     plateau = sum(r["fluidization_index"] * r["time_step"] for r in held) / sum(r["time_step"] for r in held)
     expect(abs(plateau - 1) < 0.02, f"fluidized plateau FI {plateau:.4f} = 1 +- 2%")
+    # momentum budget: gas pressure drop and distributor share the weight on the fixed-bed
+    # part of the ramp; on the plateau the distributor carries almost nothing
+    budget = [r["fluidization_index"] + r["distributor_support"] + r["wall_support_solids"] + r["wall_support_gas"]
+              for r in rows if 0.05 < r["time"] < 0.4]
+    expect(max(abs(b - 1) for b in budget) < 0.01, f"fixed bed: FI + supports = 1 within {max(abs(b - 1) for b in budget):.1e} < 0.01")
+    carried = sum(r["distributor_support"] * r["time_step"] for r in held) / sum(r["time_step"] for r in held)
+    expect(abs(carried) < 0.02, f"fluidized plateau: the distributor carries {carried:.4f} of the weight (< 2%)")
 
     # U_mf, the standard construction: the fixed-bed line (least squares over 0.2 <= FI
     # <= 0.8 on the rising ramp) meets FI = 1. The drag law's value: the same construction

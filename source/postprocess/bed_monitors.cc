@@ -16,6 +16,7 @@ using namespace dealii;
  * Monitors of the bed after a step: pressure drop (mean p' over the inlet minus the
  * mean over the outlet), fluidization index FI = dP A / ((M_s (1 - rho_g/rho_s)) |g|)
  * (p' excludes the gas hydrostatic part, so the bed weight is taken net of buoyancy),
+ * the shares of the bed weight the walls and the distributor carry (wall_forces.cc),
  * solids mass and drift, bounds, peak speeds, the bed height (95% of the solids below
  * it) and, at each probe height, alpha_s averaged over the layer of cells that contains
  * it (heights along -g from the coordinate origin, the inlet plane of the shipped
@@ -70,6 +71,13 @@ MonitorRow TwoFluidSolver<dim>::evaluate_monitors () const
   const double weight =
       row.solids_mass * (1 - pp.gas_density / pp.particle_density) * pp.gravity.norm ();
   row.fluidization = weight > 0 ? row.pressure_drop * inlet_area / weight : 0;
+  if (weight > 0)
+  {
+    const WallForces forces = evaluate_wall_forces ();
+    row.wall_support_solids = forces.solids_wall / weight;
+    row.wall_support_gas    = forces.gas_wall / weight;
+    row.distributor_support = forces.distributor / weight;
+  }
 
   double lo = std::numeric_limits<double>::max (), hi = -lo;
   for (unsigned int i = 0; i < alpha.locally_owned_size (); ++i)

@@ -1,25 +1,26 @@
 #include <wetbed/postprocess/csv_append.h>
 #include <wetbed/postprocess/monitors.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <iomanip>
+#include <sstream>
 #include <stdexcept>
 
 namespace wetbed
 {
-void Monitors::open (const std::string    &filename,
-                     const bool            write,
-                     const MonitorColumns &columns)
+namespace
 {
-  if (!write)
-    return;
-  file.open (filename);
+std::string header (const MonitorColumns &columns)
+{
+  std::ostringstream file;
   file << "step,time,time_step,inlet_superficial_velocity,krylov_iterations,rejected_"
           "steps,pressure_drop,"
           "fluidization_index,solids_mass,solids_mass_drift,alpha_s_min,alpha_s_max,"
           "gas_speed_max,solids_speed_max,bed_height,theta_min,theta_mean,theta_max,"
           "granular_production,granular_dissipation,granular_drag_exchange,"
-          "granular_wall_flux,active_cells,bed_surface_height,expansion_ratio";
+          "granular_wall_flux,active_cells,bed_surface_height,expansion_ratio,"
+          "wall_support_solids,wall_support_gas,distributor_support";
   for (const double h : columns.probe_heights)
     file << ",alpha_s_plane_" << h;
   if (columns.pressure_drop_planes.size () == 2)
@@ -27,16 +28,75 @@ void Monitors::open (const std::string    &filename,
          << columns.pressure_drop_planes[1];
   for (unsigned int i = 0; i < columns.point_probes; ++i)
     file << ",probe_" << i << "_alpha_s,probe_" << i << "_pressure";
-  file << '\n';
+  return file.str ();
+}
+
+std::vector<std::string> split (const std::string &line)
+{
+  std::vector<std::string> fields;
+  std::istringstream       in (line);
+  for (std::string field; std::getline (in, field, ',');)
+    fields.push_back (field);
+  if (!line.empty () && line.back () == ',')
+    fields.emplace_back ();
+  return fields;
+}
+} // namespace
+
+void Monitors::open (const std::string    &filename,
+                     const bool            write,
+                     const MonitorColumns &columns)
+{
+  if (!write)
+    return;
+  file.open (filename);
+  file << header (columns) << '\n';
 }
 
 void Monitors::reopen (const std::string       &filename,
                        const bool               write,
-                       const unsigned long long bytes)
+                       const unsigned long long bytes,
+                       const MonitorColumns    &columns)
 {
   if (!write)
     return;
   continue_csv (file, filename, bytes);
+  file.close ();
+  std::ifstream            in (filename);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline (in, line);)
+    lines.push_back (line);
+  in.close ();
+  const std::string current = header (columns);
+  if (!lines.empty () && lines[0] != current)
+  {
+    // written by a version with other columns: the rows so far are rewritten under the
+    // current header, each column found by name, the new ones left empty; into a
+    // temporary file renamed over the old one, so a failure leaves the old file whole
+    const std::vector<std::string> old_names = split (lines[0]), names = split (current);
+    const std::string              temporary = filename + ".rewrite";
+    {
+      std::ofstream out (temporary);
+      out << current << '\n';
+      for (std::size_t l = 1; l < lines.size (); ++l)
+      {
+        const std::vector<std::string> values = split (lines[l]);
+        for (std::size_t c = 0; c < names.size (); ++c)
+        {
+          const auto k = std::find (old_names.begin (), old_names.end (), names[c]) -
+                         old_names.begin ();
+          out << (c > 0 ? "," : "")
+              << (k < static_cast<long> (values.size ()) ? values[k] : std::string ());
+        }
+        out << '\n';
+      }
+      if (!out)
+        throw std::runtime_error ("checkpoint/resume: cannot rewrite " + filename +
+                                  " with the current monitor columns");
+    }
+    std::filesystem::rename (temporary, filename);
+  }
+  file.open (filename, std::ios::app);
 }
 
 unsigned long long Monitors::bytes_written ()
@@ -58,7 +118,8 @@ void Monitors::add (const MonitorRow &r)
        << r.theta_mean << ',' << r.theta_max << ',' << r.granular_energy.production << ','
        << r.granular_energy.dissipation << ',' << r.granular_energy.drag_exchange << ','
        << r.granular_energy.wall_flux << ',' << r.active_cells << ','
-       << r.bed_surface_height << ',' << r.expansion_ratio;
+       << r.bed_surface_height << ',' << r.expansion_ratio << ',' << r.wall_support_solids
+       << ',' << r.wall_support_gas << ',' << r.distributor_support;
   for (const double a : r.plane_alpha)
     file << ',' << a;
   for (const double dp : r.plane_pressure_drop)

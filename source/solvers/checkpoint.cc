@@ -252,7 +252,8 @@ void TwoFluidSolver<dim>::resume_from_checkpoint ()
 
   monitors.reopen (output + "/monitors.csv",
                    Utilities::MPI::this_mpi_process (communicator) == 0,
-                   state.monitors_bytes);
+                   state.monitors_bytes,
+                   monitor_columns ());
   monitors.restore (evaluate_monitors ());
   bubble_analysis->restore_state (state.bubble_state, output);
   resumed = true;

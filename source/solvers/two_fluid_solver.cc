@@ -117,17 +117,22 @@ void TwoFluidSolver<dim>::initialize ()
         adapt_mesh ();
         set_initial_state ();
       }
-    monitors.open (
-        folder + "/monitors.csv",
-        Utilities::MPI::this_mpi_process (communicator) == 0,
-        {parameters.output.probe_heights,
-         parameters.bed_monitors.pressure_drop_planes,
-         static_cast<unsigned int> (parameters.bed_monitors.point_probes.size ())});
+    monitors.open (folder + "/monitors.csv",
+                   Utilities::MPI::this_mpi_process (communicator) == 0,
+                   monitor_columns ());
     bubble_analysis->open (folder);
   }
   if (parameters.checkpoint.on_signal)
     catch_stop_signals ();
   initialized = true;
+}
+
+template <int dim>
+MonitorColumns TwoFluidSolver<dim>::monitor_columns () const
+{
+  return {parameters.output.probe_heights,
+          parameters.bed_monitors.pressure_drop_planes,
+          static_cast<unsigned int> (parameters.bed_monitors.point_probes.size ())};
 }
 
 template <int dim>

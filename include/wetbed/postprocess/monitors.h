@@ -26,13 +26,17 @@ struct MonitorRow
   unsigned int rejected       = 0; // rejected attempts so far
   double       pressure_drop = 0; // mean p' on the inlet minus mean p' on the outlet (Pa)
   double       fluidization  = 0; // pressure_drop * A / (buoyant bed weight)
-  double       solids_mass   = 0; // kg (per metre depth in 2D)
-  double       mass_drift    = 0; // relative change of the solids mass since t = 0
-  double       alpha_min     = 0;
-  double       alpha_max     = 0;
-  double       gas_speed_max = 0;
-  double       solids_speed_max = 0;
-  double       bed_height       = 0; // height below which 95% of the solids lie
+  // the bed weight carried by the boundaries, as fractions of the buoyant bed weight
+  // (time mean: FI + the three ~ 1): friction of the walls on the solids, viscous
+  // traction of the walls on the gas, normal stress of the distributor on the solids
+  double wall_support_solids = 0, wall_support_gas = 0, distributor_support = 0;
+  double solids_mass      = 0; // kg (per metre depth in 2D)
+  double mass_drift       = 0; // relative change of the solids mass since t = 0
+  double alpha_min        = 0;
+  double alpha_max        = 0;
+  double gas_speed_max    = 0;
+  double solids_speed_max = 0;
+  double bed_height       = 0; // height below which 95% of the solids lie
   double theta_min = 0, theta_mean = 0, theta_max = 0; // Theta (mean: solids-weighted)
   double granular_sound_speed = 0; // max sqrt(2 P_kin/(alpha_s rho_s)) (m/s)
   GranularEnergyBudget granular_energy;
@@ -60,8 +64,13 @@ class Monitors
 public:
   void open (const std::string &filename, bool write, const MonitorColumns &columns = {});
   /** Continues `filename` of a resumed run: cut back to its first `bytes` (the rows up
-   * to the checkpoint) and appended to from there. */
-  void reopen (const std::string &filename, bool write, unsigned long long bytes);
+   * to the checkpoint) and appended to from there. Rows written with other `columns`
+   * (an earlier version) are rewritten under the current header, by column name, with
+   * the columns they lack left empty. */
+  void reopen (const std::string    &filename,
+               bool                  write,
+               unsigned long long    bytes,
+               const MonitorColumns &columns);
   /** Bytes of monitors.csv written so far (rank 0; 0 elsewhere). */
   unsigned long long bytes_written ();
   /** Makes `row` the last row without writing it (a resumed run's last saved state). */

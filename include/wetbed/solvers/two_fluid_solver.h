@@ -163,6 +163,15 @@ private:
 
   // postprocessing (source/postprocess/)
   MonitorRow evaluate_monitors () const;
+  /** The optional columns of monitors.csv this case asks for. */
+  MonitorColumns monitor_columns () const;
+  /** Vertical forces (N, per metre depth in 2D) of the boundaries on the phases
+   * (source/postprocess/wall_forces.cc); collective. */
+  struct WallForces
+  {
+    double solids_wall = 0, gas_wall = 0, distributor = 0;
+  };
+  WallForces evaluate_wall_forces () const;
   /** Plane averages, bed surface, point probes (source/postprocess/bed_profile.cc). */
   void evaluate_bed_profile (MonitorRow &row) const;
   /** The bubble analysis of this mesh (its boundary ids), made right after the mesh is

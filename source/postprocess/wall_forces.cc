@@ -1,0 +1,122 @@
+#include <wetbed/solvers/two_fluid_solver.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+
+/*
+ * The vertical forces that hold the bed up besides the gas pressure drop, for the
+ * momentum budget of monitors.csv: in the time mean of a statistically steady bed,
+ *   FI + wall_support_solids + wall_support_gas + distributor_support ~ 1,
+ * the remainder being the change of the phases' momentum, the gas momentum flux and
+ * pressure forces on walls that are not vertical. Each force is the one the boundary
+ * exerts on a phase, along -g, divided by the buoyant bed weight:
+ *   - walls on the solids: the friction -C (u_s - u_w)_t of the Johnson-Jackson or
+ *     partial-slip condition, with C as the assembly takes it (a no-slip solids phase:
+ *     its viscous traction tau_s n, from the velocity gradient);
+ *   - walls on the gas: the viscous traction tau_g n of a no-slip gas;
+ *   - the inlet (distributor) on the solids held there: (-(P_s + P_kin) I + tau_s) n.
+ */
+namespace wetbed
+{
+using namespace dealii;
+
+template <int dim>
+typename TwoFluidSolver<dim>::WallForces
+TwoFluidSolver<dim>::evaluate_wall_forces () const
+{
+  const auto          &pp              = parameters.physical;
+  const auto          &bc              = parameters.boundary;
+  const Tensor<1, dim> up              = upward_direction<dim> (pp.gravity);
+  const Tensor<1, dim> wall_velocity   = moving_wall_velocity ();
+  const bool           solids_friction = bc.solids_wall == WallCondition::partial_slip ||
+                               bc.solids_wall == WallCondition::johnson_jackson;
+  const QGauss<dim - 1> quadrature (3);
+  FEFaceValues<dim>     flow_values (mapping,
+                                 flow_fe,
+                                 quadrature,
+                                 update_values | update_gradients |
+                                     update_normal_vectors | update_JxW_values);
+  FEFaceValues<dim>     alpha_values (mapping, alpha_fe, quadrature, update_values);
+  const FEValuesExtractors::Vector gas (0), solids (dim);
+  std::vector<Tensor<1, dim>>      u_s (quadrature.size ());
+  std::vector<Tensor<2, dim>>      grad_u_g (quadrature.size ()),
+      grad_u_s (quadrature.size ());
+  std::vector<double> a (quadrature.size ()), theta_q (quadrature.size ());
+  // the viscous stress 2 mu D + (lambda - 2/3 mu) div u I of a velocity gradient
+  auto viscous = [] (const Tensor<2, dim> &grad, const double mu, const double lambda)
+  {
+    const SymmetricTensor<2, dim> strain = symmetrize (grad);
+    return Tensor<2, dim> (2 * mu * strain + (lambda - 2.0 / 3.0 * mu) * trace (strain) *
+                                                 unit_symmetric_tensor<dim> ());
+  };
+  WallForces forces;
+  auto       alpha_cell = alpha_dof_handler.begin_active ();
+  for (const auto &cell : flow_dof_handler.active_cell_iterators ())
+  {
+    if (cell->is_locally_owned ())
+      for (const auto &face : cell->face_iterators ())
+      {
+        if (!face->at_boundary ())
+          continue;
+        const auto id   = face->boundary_id ();
+        const bool wall = boundary_ids.is_wall (id), inlet = id == boundary_ids.inlet;
+        if (!wall && !inlet)
+          continue;
+        flow_values.reinit (cell, face);
+        alpha_values.reinit (alpha_cell, face);
+        flow_values[solids].get_function_values (flow_solution, u_s);
+        flow_values[gas].get_function_gradients (flow_solution, grad_u_g);
+        flow_values[solids].get_function_gradients (flow_solution, grad_u_s);
+        alpha_values.get_function_values (alpha, a);
+        alpha_values.get_function_values (theta, theta_q);
+        for (unsigned int q = 0; q < quadrature.size (); ++q)
+        {
+          const Tensor<1, dim>          n   = flow_values.normal_vector (q);
+          const double                  JxW = flow_values.JxW (q);
+          const double                  a_s = std::max (a[q], 0.0);
+          const SymmetricTensor<2, dim> deviator =
+              deviator_tensor<dim> () * symmetrize (grad_u_s[q]);
+          const closures::SolidsStress stress = solids_stress->evaluate (
+              {a_s, theta_q[q], std::sqrt (2.0 * deviator * deviator)});
+          // MFIX convention: mu_s, lambda_s carry alpha_s (DESIGN s2)
+          const Tensor<2, dim> tau_s =
+              viscous (grad_u_s[q], stress.shear_viscosity, stress.bulk_viscosity);
+          if (inlet)
+          {
+            const double pressure = stress.pressure + stress.kinetic_pressure;
+            forces.distributor += (-pressure * n + tau_s * n) * up * JxW;
+            continue;
+          }
+          if (bc.gas_wall == WallCondition::no_slip)
+            forces.gas_wall +=
+                (viscous (grad_u_g[q], (1 - a_s) * pp.gas_viscosity, 0.0) * n) * up * JxW;
+          if (solids_friction)
+          {
+            const double   friction = bc.solids_wall == WallCondition::johnson_jackson
+                                          ? kinetic_theory->wall ().shear_coefficient (
+                                              a_s,
+                                              kinetic_theory->radial_distribution (a_s),
+                                              std::max (theta_q[q], 0.0))
+                                          : bc.solids_wall_friction;
+            Tensor<1, dim> slip =
+                u_s[q] -
+                (id == boundary_ids.moving_wall ? wall_velocity : Tensor<1, dim> ());
+            slip -= (slip * n) * n;
+            forces.solids_wall += -friction * (slip * up) * JxW;
+          }
+          else if (bc.solids_wall == WallCondition::no_slip)
+            forces.solids_wall += (tau_s * n) * up * JxW;
+        }
+      }
+    ++alpha_cell;
+  }
+  forces.solids_wall = Utilities::MPI::sum (forces.solids_wall, communicator);
+  forces.gas_wall    = Utilities::MPI::sum (forces.gas_wall, communicator);
+  forces.distributor = Utilities::MPI::sum (forces.distributor, communicator);
+  return forces;
+}
+
+template TwoFluidSolver<2>::WallForces TwoFluidSolver<2>::evaluate_wall_forces () const;
+template TwoFluidSolver<3>::WallForces TwoFluidSolver<3>::evaluate_wall_forces () const;
+} // namespace wetbed
