@@ -36,8 +36,15 @@ parser.add_argument("--loadings", nargs="+", type=float,
                     default=[0, 0.027, 0.055, 0.08, 0.1, 0.12, 0.138], help="delta in units of 1e-2")
 parser.add_argument("--jobs", type=int, default=1)
 parser.add_argument("--summarize-only", action="store_true")
+parser.add_argument("--maximum-wet-viscosity", type=float,
+                    help="cap of mu_wet (Pa s) instead of the case's; a sensitivity study, kept in WORK/cap_<value>")
 parser.add_argument("--work", default=os.path.join(root, "build", "benchmarks", "liquid_loading_sweep"))
 args = parser.parse_args()
+cap, suffix = "", ""
+if args.maximum_wet_viscosity is not None:
+    args.work = os.path.join(args.work, f"cap_{args.maximum_wet_viscosity:g}")
+    cap = f"  set maximum wet viscosity = {args.maximum_wet_viscosity:g}\n"
+    suffix = f"_cap_{args.maximum_wet_viscosity:g}"
 os.makedirs(args.work, exist_ok=True)
 base = read_case("wet_column_2d")
 
@@ -48,7 +55,7 @@ def name(loading):
 
 def case(loading):
     return write_case(args.work, name(loading), base, args.end_time,
-                      f"\nsubsection wet particles\n  set liquid loading = {loading * 1e-2:.6g}\nend\n"
+                      f"\nsubsection wet particles\n  set liquid loading = {loading * 1e-2:.6g}\n{cap}end\n"
                       "subsection output\n  set field format = hdf5\nend\n"
                       "subsection checkpoint\n  set interval = 500\n  set at end = false\nend\n")
 
@@ -101,7 +108,8 @@ def number(value, form):
 
 
 lines = [f"## Liquid-loading sweep (prm/wet_column_2d.prm, 600 cells, serial, {args.jobs} at a time)",
-         f"Command: `python3 benchmarks/liquid_loading_sweep.py --end-time {args.end_time:g} --start-up {args.start_up:g} --jobs {args.jobs}`"
+         f"Command: `python3 benchmarks/liquid_loading_sweep.py --end-time {args.end_time:g} --start-up {args.start_up:g} --jobs {args.jobs}"
+         + (f" --maximum-wet-viscosity {args.maximum_wet_viscosity:g}" if cap else "") + "`"
          " (continued over sittings from checkpoints; wall time summed over the pieces). Means over"
          f" t > {args.start_up:g} s; the stress split is the share of each part in the summed solids shear"
          " stress μ_i|γ̇| and the dissipation the mean collisional γ over the field outputs' cells with α_s > 0.3.", "",
@@ -131,8 +139,8 @@ ax.set_ylabel("FI = ΔP A / (M g)")
 ax.legend(fontsize=7, ncol=2)
 ax.set_title("2D wet column (seed-000 small column), liquid loading sweep")
 fig.tight_layout()
-fig.savefig(os.path.join(root, "doc", "liquid_loading_fi.png"), dpi=110)
-print("wrote doc/liquid_loading_fi.png")
+fig.savefig(os.path.join(root, "doc", f"liquid_loading_fi{suffix}.png"), dpi=110)
+print(f"wrote doc/liquid_loading_fi{suffix}.png")
 
 # seed 000's Figs. 9-10: the stress parts of one wet run (the loading nearest 0.1e-2),
 # the dissipation and Theta of it and of the dry run, against alpha_s
@@ -166,9 +174,9 @@ if wet and samples.get(0):
         ax.set_xlabel("α_s")
         ax.legend(fontsize=7, markerscale=6)
     fig.tight_layout()
-    fig.savefig(os.path.join(root, "doc", "liquid_loading_stress.png"), dpi=110)
-    print("wrote doc/liquid_loading_stress.png")
+    fig.savefig(os.path.join(root, "doc", f"liquid_loading_stress{suffix}.png"), dpi=110)
+    print(f"wrote doc/liquid_loading_stress{suffix}.png")
 
-replace_doc_section(root, "liquid_loading_sweep", "Liquid-loading sweep",
-                    lines + ["", "![FI(t) of the sweep](liquid_loading_fi.png)", "",
-                             "![stress split, dissipation and Θ against α_s](liquid_loading_stress.png)"])
+replace_doc_section(root, "liquid_loading_sweep" + suffix, "Liquid-loading sweep" + (f", μ_wet capped at {args.maximum_wet_viscosity:g} Pa·s" if cap else ""),
+                    lines + ["", f"![FI(t) of the sweep](liquid_loading_fi{suffix}.png)", "",
+                             f"![stress split, dissipation and Θ against α_s](liquid_loading_stress{suffix}.png)"])

@@ -48,9 +48,9 @@ template <int dim>
 std::string TwoFluidSolver<dim>::describe_failed_state (const double dt) const
 {
   const double          big = std::numeric_limits<double>::max ();
-  std::array<double, 4> alpha_lo{big, 0, 0, 0}, alpha_hi{-big, 0, 0, 0},
-      theta_lo{big, 0, 0, 0}, theta_hi{-big, 0, 0, 0}, ug{-big, 0, 0, 0},
-      us{-big, 0, 0, 0};
+  std::array<double, 4> alpha_lo{{big, 0, 0, 0}}, alpha_hi{{-big, 0, 0, 0}},
+      theta_lo{{big, 0, 0, 0}}, theta_hi{{-big, 0, 0, 0}}, ug{{-big, 0, 0, 0}},
+      us{{-big, 0, 0, 0}};
   double theta_at_alpha_hi = 0;
   auto record = [] (std::array<double, 4> &e, double v, const Point<dim> &x, double sign)
   {
