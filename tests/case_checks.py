@@ -126,7 +126,7 @@ elif check == "ramp":
     expect(abs(plateau - 1) < 0.02, f"fluidized plateau FI {plateau:.4f} = 1 +- 2%")
     # momentum budget: gas pressure drop and distributor share the weight on the fixed-bed
     # part of the ramp; on the plateau the distributor carries almost nothing
-    budget = [r["fluidization_index"] + r["distributor_support"] + r["wall_support_solids"] + r["wall_support_gas"]
+    budget = [r["fluidization_index"] + r["distributor_support"] + r["wall_support_solids"] + r["wall_support_gas"] + r["outlet_support"]
               for r in rows if 0.05 < r["time"] < 0.4]
     expect(max(abs(b - 1) for b in budget) < 0.01, f"fixed bed: FI + supports = 1 within {max(abs(b - 1) for b in budget):.1e} < 0.01")
     carried = sum(r["distributor_support"] * r["time_step"] for r in held) / sum(r["time_step"] for r in held)

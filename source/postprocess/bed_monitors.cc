@@ -77,6 +77,7 @@ MonitorRow TwoFluidSolver<dim>::evaluate_monitors () const
     row.wall_support_solids = forces.solids_wall / weight;
     row.wall_support_gas    = forces.gas_wall / weight;
     row.distributor_support = forces.distributor / weight;
+    row.outlet_support      = forces.outlet / weight;
   }
 
   double lo = std::numeric_limits<double>::max (), hi = -lo;

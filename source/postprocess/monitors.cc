@@ -20,7 +20,7 @@ std::string header (const MonitorColumns &columns)
           "gas_speed_max,solids_speed_max,bed_height,theta_min,theta_mean,theta_max,"
           "granular_production,granular_dissipation,granular_drag_exchange,"
           "granular_wall_flux,active_cells,bed_surface_height,expansion_ratio,"
-          "wall_support_solids,wall_support_gas,distributor_support";
+          "wall_support_solids,wall_support_gas,distributor_support,outlet_support";
   for (const double h : columns.probe_heights)
     file << ",alpha_s_plane_" << h;
   if (columns.pressure_drop_planes.size () == 2)
@@ -119,7 +119,8 @@ void Monitors::add (const MonitorRow &r)
        << r.granular_energy.dissipation << ',' << r.granular_energy.drag_exchange << ','
        << r.granular_energy.wall_flux << ',' << r.active_cells << ','
        << r.bed_surface_height << ',' << r.expansion_ratio << ',' << r.wall_support_solids
-       << ',' << r.wall_support_gas << ',' << r.distributor_support;
+       << ',' << r.wall_support_gas << ',' << r.distributor_support << ','
+       << r.outlet_support;
   for (const double a : r.plane_alpha)
     file << ',' << a;
   for (const double dp : r.plane_pressure_drop)

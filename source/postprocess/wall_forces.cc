@@ -7,7 +7,8 @@
 /*
  * The vertical forces that hold the bed up besides the gas pressure drop, for the
  * momentum budget of monitors.csv: in the time mean of a statistically steady bed,
- *   FI + wall_support_solids + wall_support_gas + distributor_support ~ 1,
+ *   FI + wall_support_solids + wall_support_gas + distributor_support
+ *      + outlet_support ~ 1,
  * the remainder being the change of the phases' momentum, the gas momentum flux and
  * pressure forces on walls that are not vertical. Each force is the one the boundary
  * exerts on a phase, along -g, divided by the buoyant bed weight:
@@ -15,7 +16,9 @@
  *     partial-slip condition, with C as the assembly takes it (a no-slip solids phase:
  *     its viscous traction tau_s n, from the velocity gradient);
  *   - walls on the gas: the viscous traction tau_g n of a no-slip gas;
- *   - the inlet (distributor) on the solids held there: (-(P_s + P_kin) I + tau_s) n.
+ *   - the inlet (distributor) on the solids held there: (-(P_s + P_kin) I + tau_s) n;
+ *   - the outlet (a grid that retains the solids) on the solids, the same stress: it
+ *     pushes a bed that reaches the top down (negative).
  */
 namespace wetbed
 {
@@ -60,8 +63,9 @@ TwoFluidSolver<dim>::evaluate_wall_forces () const
         if (!face->at_boundary ())
           continue;
         const auto id   = face->boundary_id ();
-        const bool wall = boundary_ids.is_wall (id), inlet = id == boundary_ids.inlet;
-        if (!wall && !inlet)
+        const bool wall = boundary_ids.is_wall (id), inlet = id == boundary_ids.inlet,
+                   outlet = id == boundary_ids.outlet;
+        if (!wall && !inlet && !outlet)
           continue;
         flow_values.reinit (cell, face);
         alpha_values.reinit (alpha_cell, face);
@@ -82,10 +86,11 @@ TwoFluidSolver<dim>::evaluate_wall_forces () const
           // MFIX convention: mu_s, lambda_s carry alpha_s (DESIGN s2)
           const Tensor<2, dim> tau_s =
               viscous (grad_u_s[q], stress.shear_viscosity, stress.bulk_viscosity);
-          if (inlet)
+          if (inlet || outlet)
           {
             const double pressure = stress.pressure + stress.kinetic_pressure;
-            forces.distributor += (-pressure * n + tau_s * n) * up * JxW;
+            (inlet ? forces.distributor : forces.outlet) +=
+                (-pressure * n + tau_s * n) * up * JxW;
             continue;
           }
           if (bc.gas_wall == WallCondition::no_slip)
@@ -114,6 +119,7 @@ TwoFluidSolver<dim>::evaluate_wall_forces () const
   forces.solids_wall = Utilities::MPI::sum (forces.solids_wall, communicator);
   forces.gas_wall    = Utilities::MPI::sum (forces.gas_wall, communicator);
   forces.distributor = Utilities::MPI::sum (forces.distributor, communicator);
+  forces.outlet      = Utilities::MPI::sum (forces.outlet, communicator);
   return forces;
 }
 

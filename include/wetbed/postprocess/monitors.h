@@ -28,8 +28,10 @@ struct MonitorRow
   double       fluidization  = 0; // pressure_drop * A / (buoyant bed weight)
   // the bed weight carried by the boundaries, as fractions of the buoyant bed weight
   // (time mean: FI + the three ~ 1): friction of the walls on the solids, viscous
-  // traction of the walls on the gas, normal stress of the distributor on the solids
-  double wall_support_solids = 0, wall_support_gas = 0, distributor_support = 0;
+  // traction of the walls on the gas, normal stress of the distributor and of the
+  // outlet grid on the solids
+  double wall_support_solids = 0, wall_support_gas = 0, distributor_support = 0,
+         outlet_support   = 0;
   double solids_mass      = 0; // kg (per metre depth in 2D)
   double mass_drift       = 0; // relative change of the solids mass since t = 0
   double alpha_min        = 0;

@@ -169,7 +169,7 @@ private:
    * (source/postprocess/wall_forces.cc); collective. */
   struct WallForces
   {
-    double solids_wall = 0, gas_wall = 0, distributor = 0;
+    double solids_wall = 0, gas_wall = 0, distributor = 0, outlet = 0;
   };
   WallForces evaluate_wall_forces () const;
   /** Plane averages, bed surface, point probes (source/postprocess/bed_profile.cc). */
