@@ -145,7 +145,8 @@ print(f"wrote doc/liquid_loading_fi{suffix}.png")
 # seed 000's Figs. 9-10: the stress parts of one wet run (the loading nearest 0.1e-2),
 # the dissipation and Theta of it and of the dry run, against alpha_s
 wet = [w for w in samples if w > 0 and samples[w]]
-if wet and samples.get(0):
+stress_figure = bool(wet and samples.get(0))
+if stress_figure:
     import numpy  # noqa: E402
     chosen = min(wet, key=lambda w: abs(w - 0.1))
     fig, axes = plt.subplots(1, 3, figsize=(12, 3.8))
@@ -178,5 +179,5 @@ if wet and samples.get(0):
     print(f"wrote doc/liquid_loading_stress{suffix}.png")
 
 replace_doc_section(root, "liquid_loading_sweep" + suffix, "Liquid-loading sweep" + (f", μ_wet capped at {args.maximum_wet_viscosity:g} Pa·s" if cap else ""),
-                    lines + ["", f"![FI(t) of the sweep](liquid_loading_fi{suffix}.png)", "",
-                             f"![stress split, dissipation and Θ against α_s](liquid_loading_stress{suffix}.png)"])
+                    lines + ["", f"![FI(t) of the sweep](liquid_loading_fi{suffix}.png)"]
+                    + (["", f"![stress split, dissipation and Θ against α_s](liquid_loading_stress{suffix}.png)"] if stress_figure else []))
