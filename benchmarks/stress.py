@@ -66,7 +66,7 @@ cases = [
     ("2 MPI ranks", dry, "", 2),
 ]
 for order in (1, 2):
-    for dt in (0.5e-3, 1e-3, 2e-3, 4e-3):
+    for dt in (0.5e-3, 1e-3, 2e-3, 4e-3, 8e-3, 16e-3):
         cases.append((f"BDF{order}, fixed dt = {1e3 * dt:g} ms", dry,
                       f"subsection time stepping\n set adaptive = false\n set bdf order = {order}\n"
                       f" set initial time step = {dt}\n set maximum time step = {dt}\nend\n", 1))
