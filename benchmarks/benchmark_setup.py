@@ -89,13 +89,14 @@ def summarize_run(folder, log, start_up, wall=None):
         if idx:
             windows.append(sum(fi[i] * dt[i] for i in idx) / sum(dt[i] for i in idx))
         w0 += 0.5
+    total_wall = wall
     text = open(log).read() if os.path.exists(log) else ""
     fin = re.search(r"Finished: (\d+) steps \((\d+) rejected\), wall ([\d.e+-]+) s, ([\d.e+-]+) s per simulated second", text)
     steps, rejected, wall, per_second = (
         (int(fin.group(1)), int(fin.group(2)), float(fin.group(3)), float(fin.group(4))) if fin
         else (len(data) - 1, int(data[-1]["rejected_steps"]), float("nan"), float("nan")))
-    if wall is not None:
-        steps, wall, per_second = int(float(data[-1]["step"])), wall, wall / max(t[-1], 1e-30)
+    if total_wall is not None:
+        steps, wall, per_second = int(float(data[-1]["step"])), total_wall, total_wall / max(t[-1], 1e-30)
     summary = {
         "end": t[-1], "finished": bool(fin), "mean_fi": mean_fi,
         "fi_min_window": min(windows) if windows else float("nan"),
