@@ -52,11 +52,16 @@ int main ()
   const std::string file = "spectrum_monitors.csv";
   {
     std::ofstream out (file);
-    out << "step,time,pressure_drop,alpha_s_plane_0.076\n";
+    // a support share that is exactly balanced prints as a subnormal number
+    out << "step,time,pressure_drop,alpha_s_plane_0.076,wall_support_gas\n";
     for (std::size_t i = 0; i < t.size (); ++i)
       out << i << ',' << std::setprecision (12) << t[i] << ',' << y[i] << ',' << z[i]
-          << '\n';
+          << ',' << (i == 3 ? "-4.39372578846621e-320" : "0") << '\n';
   }
+  const CsvTable read = read_csv (file);
+  check (read.columns.size () == 5 && read.columns[4].size () == t.size () &&
+             read.columns[4][3] < 0 && read.columns[4][3] > -1e-300,
+         "a subnormal value is read as the number it is");
   std::ostringstream table;
   const auto         dominant = write_monitor_spectra (file, {}, 1.0, 4, table);
   check (dominant.size () == 2, "two monitor columns analysed");

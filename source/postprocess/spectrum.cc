@@ -3,7 +3,9 @@
 #include <fftw3.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <iomanip>
 #include <memory>
@@ -117,6 +119,24 @@ const std::vector<double> &CsvTable::column (const std::string &name) const
   return columns[it - names.begin ()];
 }
 
+namespace
+{
+/// A number of a CSV cell. Unlike std::stod this accepts subnormal values (a monitor
+/// that balances to zero can print as 1e-320): strtod then reports an underflow but
+/// returns the value itself.
+double parse_number (const std::string &item)
+{
+  const char *begin      = item.c_str ();
+  char       *end        = nullptr;
+  errno                  = 0;
+  const double value     = std::strtod (begin, &end);
+  const bool   underflow = errno == ERANGE && std::abs (value) <= 1.0;
+  if (end == begin || *end != '\0' || (errno == ERANGE && !underflow))
+    throw std::invalid_argument (item);
+  return value;
+}
+} // namespace
+
 CsvTable read_csv (const std::string &filename)
 {
   std::ifstream in (filename);
@@ -144,9 +164,9 @@ CsvTable read_csv (const std::string &filename)
                                      " has fewer columns than its header");
       try
       {
-        table.columns[c].push_back (item.empty () ? std::nan ("") : std::stod (item));
+        table.columns[c].push_back (item.empty () ? std::nan ("") : parse_number (item));
       }
-      catch (const std::exception &)
+      catch (const std::invalid_argument &)
       {
         throw std::invalid_argument ("'" + filename + "' line " + std::to_string (row) +
                                      ": '" + item + "' is not a number");
