@@ -146,7 +146,8 @@ public:
   Tensor<1, dim> gas_momentum_source (const Point<dim> &x) const override
   {
     const State s = state (x);
-    return (1 - s.alpha) * parameters.physical.gas_density * (s.grad_u[0] * s.u[0]) -
+    return (1 - s.alpha) * parameters.physical.gas_density * (s.grad_u[0] * s.u[0]) +
+           continuity_term (s, 0) -
            divergence (
                [&] (const Point<dim> &y) { return viscous_stress (state (y), 0); }, x) +
            (1 - s.alpha) * s.grad_p + drag_coefficient (s) * (s.u[0] - s.u[1]);
@@ -161,7 +162,8 @@ public:
     // grad (P_fr + P_kin) by central differences of the total solids pressure
     const Tensor<1, dim> grad_pressure = central_difference_gradient<dim> (
         [&] (const Point<dim> &y) { return solids_pressure (state (y)); }, x);
-    return s.alpha * pp.particle_density * (s.grad_u[1] * s.u[1]) -
+    return s.alpha * pp.particle_density * (s.grad_u[1] * s.u[1]) +
+           continuity_term (s, 1) -
            divergence (
                [&] (const Point<dim> &y) { return viscous_stress (state (y), 1); }, x) +
            s.alpha * s.grad_p + grad_pressure - drag_coefficient (s) * (s.u[0] - s.u[1]) -
@@ -246,6 +248,19 @@ private:
     Tensor<1, dim> u[2];      // gas, solids
     Tensor<2, dim> grad_u[2]; // grad[i][j] = d_j u_i
   };
+
+  // the conservative form's rho_k div(alpha_k u_k) u_k (steady: the time parts vanish)
+  Tensor<1, dim> continuity_term (const State &s, const unsigned int k) const
+  {
+    if (!parameters.conservative_momentum)
+      return Tensor<1, dim> ();
+    const double fraction = k == 0 ? 1 - s.alpha : s.alpha;
+    const double density =
+        k == 0 ? parameters.physical.gas_density : parameters.physical.particle_density;
+    const double divergence = fraction * dealii::trace (s.grad_u[k]) +
+                              (k == 0 ? -1.0 : 1.0) * (s.grad_alpha * s.u[k]);
+    return density * divergence * s.u[k];
+  }
 
   State state (const Point<dim> &x) const
   {

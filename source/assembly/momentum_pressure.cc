@@ -34,10 +34,21 @@ void TwoFluidSolver<dim>::assemble_flow_system (const BDFCoefficients &bdf,
                                                 const double           dt)
 {
   TimerOutput::Scope scope (timer, "flow assembly");
-  flow_matrix        = 0;
-  schur_matrix       = 0;
-  flow_rhs           = 0;
-  const auto  &pp    = parameters.physical;
+  flow_matrix = 0;
+  boundary_cell_systems.clear ();
+  assembled_alpha = alpha;
+  assembled_flow  = flow_solution;
+  assembled_alpha.update_ghost_values ();
+  assembled_flow.update_ghost_values ();
+  if (parameters.conservative_momentum)
+  {
+    alpha_old.update_ghost_values ();
+    alpha_old2.update_ghost_values ();
+  }
+  const Tensor<1, dim> up = upward_direction<dim> (parameters.physical.gravity);
+  schur_matrix            = 0;
+  flow_rhs                = 0;
+  const auto  &pp         = parameters.physical;
   const double rho_g = pp.gas_density, rho_s = pp.particle_density,
                mu_g = pp.gas_viscosity;
   Tensor<1, dim> gravity;
@@ -76,7 +87,9 @@ void TwoFluidSolver<dim>::assemble_flow_system (const BDFCoefficients &bdf,
   std::vector<Tensor<1, dim>>      grad_a_s (n_q);
   std::vector<Tensor<1, dim>>      ug_lag (n_q), us_lag (n_q), ug_old (n_q), us_old (n_q),
       ug_old2 (n_q), us_old2 (n_q);
-  std::vector<Tensor<2, dim>> grad_us_lag (n_q);
+  std::vector<Tensor<2, dim>> grad_us_lag (n_q), grad_ug_lag (n_q);
+  std::vector<double>         a_s_old (n_q), a_s_old2 (n_q);
+  const bool                  conservative = parameters.conservative_momentum;
   Vector<double>              alpha_nodal (alpha_fe.n_dofs_per_cell ()),
       pressure_nodal (alpha_fe.n_dofs_per_cell ());
   std::vector<double>         pressure_interpolant (n_q);
@@ -124,6 +137,12 @@ void TwoFluidSolver<dim>::assemble_flow_system (const BDFCoefficients &bdf,
     fe_values[gas].get_function_values (flow_solution, ug_lag);
     fe_values[solids].get_function_values (flow_solution, us_lag);
     fe_values[solids].get_function_gradients (flow_solution, grad_us_lag);
+    if (conservative)
+    {
+      fe_values[gas].get_function_gradients (flow_solution, grad_ug_lag);
+      alpha_values.get_function_values (alpha_old, a_s_old);
+      alpha_values.get_function_values (alpha_old2, a_s_old2);
+    }
     fe_values[gas].get_function_values (flow_old, ug_old);
     fe_values[solids].get_function_values (flow_old, us_old);
     fe_values[gas].get_function_values (flow_old2, ug_old2);
@@ -166,11 +185,39 @@ void TwoFluidSolver<dim>::assemble_flow_system (const BDFCoefficients &bdf,
 
       const double inertia_g = alpha_g * rho_g, inertia_s = alpha_inertia * rho_s;
       const double mass_g = bdf.a0 * inertia_g / dt, mass_s = bdf.a0 * inertia_s / dt;
+      // the BDF history: conservative, each level with its own volume fraction
+      double history[2][2] = {{inertia_g, inertia_g}, {inertia_s, inertia_s}};
+      // conservative: rho_k div(alpha_k* u_k*) u_k, implicit where positive (mass
+      // added), with the lagged u_k* where negative (keeps the diagonal positive)
+      double         continuity_mass[2] = {0, 0};
+      Tensor<1, dim> continuity_force[2];
+      if (conservative)
+      {
+        const double residual      = pp.residual_solids_fraction;
+        history[0][0]              = (1 - a_s_old[q]) * rho_g;
+        history[0][1]              = (1 - a_s_old2[q]) * rho_g;
+        history[1][0]              = std::max (a_s_old[q], residual) * rho_s;
+        history[1][1]              = std::max (a_s_old2[q], residual) * rho_s;
+        const double divergence[2] = {
+            alpha_g * trace (grad_ug_lag[q]) - grad_alpha_s * ug_lag[q],
+            alpha_inertia * trace (grad_us_lag[q]) +
+                (alpha_s > residual ? grad_alpha_s * us_lag[q] : 0.0)};
+        const double         density[2] = {rho_g, rho_s};
+        const Tensor<1, dim> lagged[2]  = {ug_lag[q], us_lag[q]};
+        for (unsigned int k = 0; k < 2; ++k)
+        {
+          continuity_mass[k]  = density[k] * std::max (divergence[k], 0.0);
+          continuity_force[k] = -density[k] * std::min (divergence[k], 0.0) * lagged[k];
+        }
+      }
       const Tensor<1, dim> history_g =
-          -(bdf.a1 * ug_old[q] + bdf.a2 * ug_old2[q]) * inertia_g / dt;
+          -(bdf.a1 * history[0][0] * ug_old[q] + bdf.a2 * history[0][1] * ug_old2[q]) /
+              dt +
+          continuity_force[0];
       Tensor<1, dim> force_s =
-          -(bdf.a1 * us_old[q] + bdf.a2 * us_old2[q]) * inertia_s / dt +
-          alpha_mean * (rho_s - rho_g) * gravity;
+          -(bdf.a1 * history[1][0] * us_old[q] + bdf.a2 * history[1][1] * us_old2[q]) /
+              dt +
+          continuity_force[1] + alpha_mean * (rho_s - rho_g) * gravity;
       Tensor<1, dim> force_g       = history_g;
       double         volume_source = 0;
       if (manufactured)
@@ -242,7 +289,7 @@ void TwoFluidSolver<dim>::assemble_flow_system (const BDFCoefficients &bdf,
               if (k == l)
               {
                 if (d == e)
-                  value += (mass[k] + beta) * phi[i] * phi[j] +
+                  value += (mass[k] + continuity_mass[k] + beta) * phi[i] * phi[j] +
                            inertia[k] * (advecting[k] * grad_phi[j]) * phi[i] +
                            viscosity[k] * (grad_phi[i] * grad_phi[j]);
                 value += viscosity[k] * grad_phi[j][d] * grad_phi[i][e] +
@@ -412,6 +459,25 @@ void TwoFluidSolver<dim>::assemble_flow_system (const BDFCoefficients &bdf,
     }
 
     cell->get_dof_indices (dofs);
+    // keep the unconstrained system of cells with boundary velocity DoFs (reactions)
+    if (cell->at_boundary ())
+    {
+      BoundaryCellSystem system{
+          dofs, cell_matrix, cell_rhs, std::vector<double> (n_dofs, 0.0), {}};
+      system.boundary.assign (n_dofs, 3);
+      bool any = false;
+      for (unsigned int i = 0; i < n_dofs; ++i)
+        for (unsigned int b = 0; b < 3 && component[i] < 2 * dim; ++b)
+          if (boundary_velocity_dofs[b].is_element (dofs[i]))
+          {
+            system.weight[i]   = up[component[i] % dim];
+            system.boundary[i] = b;
+            any                = true;
+            break;
+          }
+      if (any)
+        boundary_cell_systems.push_back (std::move (system));
+    }
     flow_constraints.distribute_local_to_global (
         cell_matrix, cell_rhs, dofs, flow_matrix, flow_rhs);
     schur_constraints.distribute_local_to_global (cell_schur, dofs, schur_matrix);

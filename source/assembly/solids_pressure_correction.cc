@@ -228,8 +228,12 @@ void TwoFluidSolver<dim>::correct_solids_velocity (const AlphaVector     &alpha_
   std::vector<Tensor<1, dim>>          ug (quadrature.size ()), us (quadrature.size ());
   const FEValuesExtractors::Vector     gas (0), solids (dim);
   BlockVector impulse (flow_owned, communicator), lumped_mass (flow_owned, communicator);
-  Vector<double> cell_impulse (n), cell_mass (n);
-  auto           alpha_cell = alpha_dof_handler.begin_active ();
+  Vector<double>       cell_impulse (n), cell_mass (n);
+  const Tensor<1, dim> up = upward_direction<dim> (parameters.physical.gravity);
+  const double         density_difference =
+      parameters.physical.particle_density - parameters.physical.gas_density;
+  double momentum   = 0;
+  auto   alpha_cell = alpha_dof_handler.begin_active ();
   for (const auto &cell : flow_dof_handler.active_cell_iterators ())
   {
     if (cell->is_locally_owned ())
@@ -263,6 +267,9 @@ void TwoFluidSolver<dim>::correct_solids_velocity (const AlphaVector     &alpha_
             -compaction_mobility (a[q], ug[q] - us[q], bdf.a0 / dt) / a[q] * grad_w;
         // the gas gives way so that the mixture volume flux is unchanged
         const double gas_share = -a[q] / (1.0 - a[q]);
+        // the mixture momentum it adds: alpha_s rho_s du_s + alpha_g rho_g du_g
+        momentum +=
+            a[q] * density_difference * (velocity_change * up) * flow_values.JxW (q);
         for (unsigned int i = 0; i < n; ++i)
         {
           const unsigned int c = flow_fe.system_to_component_index (i).first;
@@ -284,6 +291,7 @@ void TwoFluidSolver<dim>::correct_solids_velocity (const AlphaVector     &alpha_
   }
   impulse.compress (VectorOperation::add);
   lumped_mass.compress (VectorOperation::add);
+  correction_momentum = Utilities::MPI::sum (momentum, communicator);
   // impulse / lumped mass, entry by entry (the mass is positive at every Q2 node)
   for (unsigned int b = 0; b < impulse.n_blocks (); ++b)
     for (const auto i : impulse.block (b).locally_owned_elements ())

@@ -73,11 +73,21 @@ MonitorRow TwoFluidSolver<dim>::evaluate_monitors () const
   row.fluidization = weight > 0 ? row.pressure_drop * inlet_area / weight : 0;
   if (weight > 0)
   {
-    const WallForces forces = evaluate_wall_forces ();
-    row.wall_support_solids = forces.solids_wall / weight;
-    row.wall_support_gas    = forces.gas_wall / weight;
-    row.distributor_support = forces.distributor / weight;
-    row.outlet_support      = forces.outlet / weight;
+    const WallForces forces               = evaluate_wall_forces ();
+    row.wall_support_solids               = forces.solids_wall / weight;
+    row.wall_support_gas                  = forces.gas_wall / weight;
+    row.distributor_support               = forces.distributor / weight;
+    row.outlet_support                    = forces.outlet / weight;
+    const InertialBudget inertia          = evaluate_inertial_budget (previous_time_step);
+    row.mixture_momentum                  = inertia.momentum / weight;
+    row.continuity_defect                 = inertia.continuity_defect / weight;
+    row.momentum_outflow                  = inertia.momentum_outflow / weight;
+    const std::array<double, 3> reactions = evaluate_boundary_reactions ();
+    row.inlet_reaction                    = reactions[0] / weight;
+    row.wall_reaction                     = reactions[1] / weight;
+    row.outlet_reaction                   = reactions[2] / weight;
+    row.correction_force =
+        previous_time_step > 0 ? correction_momentum / (previous_time_step * weight) : 0;
   }
 
   double lo = std::numeric_limits<double>::max (), hi = -lo;

@@ -20,7 +20,9 @@ std::string header (const MonitorColumns &columns)
           "gas_speed_max,solids_speed_max,bed_height,theta_min,theta_mean,theta_max,"
           "granular_production,granular_dissipation,granular_drag_exchange,"
           "granular_wall_flux,active_cells,bed_surface_height,expansion_ratio,"
-          "wall_support_solids,wall_support_gas,distributor_support,outlet_support";
+          "wall_support_solids,wall_support_gas,distributor_support,outlet_support,"
+          "mixture_momentum,continuity_defect,momentum_outflow,correction_force,"
+          "inlet_reaction,wall_reaction,outlet_reaction";
   for (const double h : columns.probe_heights)
     file << ",alpha_s_plane_" << h;
   if (columns.pressure_drop_planes.size () == 2)
@@ -120,7 +122,9 @@ void Monitors::add (const MonitorRow &r)
        << r.granular_energy.wall_flux << ',' << r.active_cells << ','
        << r.bed_surface_height << ',' << r.expansion_ratio << ',' << r.wall_support_solids
        << ',' << r.wall_support_gas << ',' << r.distributor_support << ','
-       << r.outlet_support;
+       << r.outlet_support << ',' << r.mixture_momentum << ',' << r.continuity_defect
+       << ',' << r.momentum_outflow << ',' << r.correction_force << ','
+       << r.inlet_reaction << ',' << r.wall_reaction << ',' << r.outlet_reaction;
   for (const double a : r.plane_alpha)
     file << ',' << a;
   for (const double dp : r.plane_pressure_drop)

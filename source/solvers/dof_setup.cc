@@ -54,6 +54,7 @@ void TwoFluidSolver<dim>::setup_dofs ()
   alpha.reinit (alpha_dof_handler.locally_owned_dofs (), alpha_relevant, communicator);
   alpha_old.reinit (alpha);
   alpha_old2.reinit (alpha);
+  assembled_alpha.reinit (alpha);
   // the granular temperature lives on the alpha_s space (Q1, same DoFs)
   theta.reinit (alpha);
   theta_old.reinit (alpha);
@@ -83,10 +84,20 @@ void TwoFluidSolver<dim>::setup_dofs ()
     SparsityTools::distribute_sparsity_pattern (dsp, owned, communicator, relevant);
     schur_matrix.reinit (flow_owned, dsp, communicator);
   }
+  {
+    std::vector<bool> velocity (2 * dim + 1, true);
+    velocity[2 * dim]                         = false;
+    const std::set<types::boundary_id> ids[3] = {
+        {boundary_ids.inlet}, boundary_ids.walls (), {boundary_ids.outlet}};
+    for (unsigned int b = 0; b < 3; ++b)
+      boundary_velocity_dofs[b] = DoFTools::extract_boundary_dofs (
+          flow_dof_handler, ComponentMask (velocity), ids[b]);
+  }
   flow_rhs.reinit (flow_owned, communicator);
   flow_solution.reinit (flow_owned, flow_relevant, communicator);
   flow_old.reinit (flow_solution);
   flow_old2.reinit (flow_solution);
+  assembled_flow.reinit (flow_solution);
 
   transport.setup (alpha_dof_handler, mapping, alpha_constraints, alpha);
 

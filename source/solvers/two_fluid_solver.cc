@@ -362,6 +362,7 @@ bool TwoFluidSolver<dim>::try_time_step (const double dt, const unsigned int bdf
   for (unsigned int k = 0; k < parameters.time.outer_iterations; ++k)
   {
     solve_history.set_outer_iteration (k);
+    correction_momentum = 0;
     // 1. closures at quadrature points + monolithic (u_g, u_s, p') solve with
     //    P_s(alpha_m) explicit, alpha_m the latest alpha_s (alpha_s^n at k = 0)
     assemble_flow_system (bdf, dt);

@@ -144,7 +144,8 @@ struct Parameters
   SpectrumParameters           spectrum;
   BedMonitorParameters         bed_monitors;
   bool                         stabilization; // SUPG + outlet backflow terms
-  std::string                  parameter_file_directory;
+  bool        conservative_momentum;          // momentum equations/form = conservative
+  std::string parameter_file_directory;
 
   static void declare_parameters (dealii::ParameterHandler &prm);
   void        parse_parameters (dealii::ParameterHandler &prm);

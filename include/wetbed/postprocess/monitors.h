@@ -31,7 +31,20 @@ struct MonitorRow
   // traction of the walls on the gas, normal stress of the distributor and of the
   // outlet grid on the solids
   double wall_support_solids = 0, wall_support_gas = 0, distributor_support = 0,
-         outlet_support   = 0;
+         outlet_support = 0;
+  // the inertial side of the budget (momentum_budget.cc): mixture momentum along -g over
+  // the buoyant weight (s), and as shares of the weight the force of the continuity
+  // residual of the advective momentum form and the momentum flux out of the domain;
+  // time mean: FI + supports + continuity_defect - momentum_outflow = 1
+  double mixture_momentum = 0, continuity_defect = 0, momentum_outflow = 0;
+  // the momentum the velocity half of the compaction correction added, per step length,
+  // as a share of the weight (it is not a boundary force: with drag, only part of the
+  // compaction force reaches the solids momentum)
+  double correction_force = 0;
+  // the consistent forces of the inlet, walls and outlet on the mixture (the reactions
+  // of their velocity rows) as shares of the weight; inlet: the discrete counterpart of
+  // FI + distributor_support
+  double inlet_reaction = 0, wall_reaction = 0, outlet_reaction = 0;
   double solids_mass      = 0; // kg (per metre depth in 2D)
   double mass_drift       = 0; // relative change of the solids mass since t = 0
   double alpha_min        = 0;

@@ -172,6 +172,21 @@ private:
     double solids_wall = 0, gas_wall = 0, distributor = 0, outlet = 0;
   };
   WallForces evaluate_wall_forces () const;
+  /** The inertial side of the vertical momentum budget, after an accepted step of
+   * length dt (source/postprocess/momentum_budget.cc): the mixture momentum along -g
+   * (kg m/s, per metre depth in 2D), the force of the continuity residual that the
+   * advective form of the momentum equations adds, and the momentum flux out through
+   * the inlet and outlet (N); collective. */
+  struct InertialBudget
+  {
+    double momentum = 0, continuity_defect = 0, momentum_outflow = 0;
+  };
+  InertialBudget evaluate_inertial_budget (double dt) const;
+  /** The vertical forces of the inlet, the walls and the outlet on the mixture (N, per
+   * metre depth in 2D; in this order): the residuals of the velocity rows on each, from
+   * the unconstrained cell systems of the last flow assembly and the current solution
+   * (momentum_budget.cc); collective. */
+  std::array<double, 3> evaluate_boundary_reactions () const;
   /** Plane averages, bed surface, point probes (source/postprocess/bed_profile.cc). */
   void evaluate_bed_profile (MonitorRow &row) const;
   /** The bubble analysis of this mesh (its boundary ids), made right after the mesh is
@@ -243,6 +258,26 @@ private:
   dealii::TrilinosWrappers::SparseMatrix correction_matrix, compaction_flux_matrix;
   dealii::TrilinosWrappers::SparseMatrix granular_energy_matrix; // PDE model only
   GranularEnergyBudget                   granular_energy_budget; // of the last update
+  // vertical mixture momentum the velocity half of the compaction correction added in
+  // the last outer iteration (N s, per metre depth in 2D), for the momentum budget
+  double correction_momentum = 0;
+  // the volume fraction and flow state the last flow assembly linearised about
+  AlphaVector assembled_alpha;
+  BlockVector assembled_flow;
+  // the unconstrained cell systems of the last flow assembly on the cells that hold
+  // velocity DoFs on the inlet, the walls or the outlet, for the consistent boundary
+  // reactions; weight: the component of -g/|g| of each such DoF's direction (0 for the
+  // others), boundary: 0 inlet, 1 walls, 2 outlet (a DoF on two: the first)
+  struct BoundaryCellSystem
+  {
+    std::vector<dealii::types::global_dof_index> dofs;
+    dealii::FullMatrix<double>                   matrix;
+    dealii::Vector<double>                       rhs;
+    std::vector<double>                          weight;
+    std::vector<unsigned int>                    boundary;
+  };
+  std::vector<BoundaryCellSystem> boundary_cell_systems;
+  std::array<dealii::IndexSet, 3> boundary_velocity_dofs;
 
   Monitors                             monitors;
   std::unique_ptr<BubbleAnalysis<dim>> bubble_analysis;

@@ -1,0 +1,169 @@
+#include <wetbed/solvers/two_fluid_solver.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+
+/*
+ * The inertial part of the vertical momentum budget of monitors.csv, the part that
+ * closes what the boundary forces (wall_forces.cc) leave open.
+ *
+ * The momentum equations are assembled (BDF1 written; alpha*, u* the volume fraction
+ * and velocity the last outer iteration linearised about, D_k = div(alpha_k* u_k*)) in
+ *   advective form:     A_k = alpha_k* rho_k (u^{n+1} - u^n)/dt
+ *                             + alpha_k* rho_k (u_k* . grad) u_k^{n+1},
+ *   conservative form:  A_k = rho_k (alpha* u^{n+1} - alpha^n u^n)/dt
+ *                             + alpha_k* rho_k (u_k* . grad) u_k^{n+1}
+ *                             + rho_k (max(D_k, 0) u^{n+1} + min(D_k, 0) u*).
+ * The conservative momentum change C_k = rho_k (alpha^{n+1} u^{n+1} - alpha^n u^n)/dt
+ * + div(alpha_k* rho_k u_k* u_k^{n+1}) differs from A_k by
+ *   advective:     rho_k [((alpha^{n+1} - alpha*) u^{n+1} + (alpha* - alpha^n) u^n)/dt
+ *                         + D_k u^{n+1}],
+ *   conservative:  rho_k [(alpha^{n+1} - alpha*) u^{n+1}/dt + min(D_k, 0)(u^{n+1} - u*)],
+ * the velocity times the continuity residual of the volume fractions the flow solve saw
+ * and the velocities it produced: large in the advective form (the alpha_s transport
+ * conserves the solids mass in its own space, but the residual tested with the vertical
+ * unit vector does not vanish), small in the conservative one. It is a force: over
+ * the domain the boundary forces satisfy
+ *   FI + supports - 1 + continuity_defect = d(mixture_momentum)/dt + momentum_outflow
+ * (all as shares of the buoyant bed weight W), with
+ *   mixture_momentum  = sum_k int alpha_k rho_k u_k . e / W   (seconds),
+ *   continuity_defect = sum_k int (C_k - N_k) . e / W,
+ *   momentum_outflow  = sum_k int_{inlet, outlet} alpha_k rho_k (u_k . e)(u_k . n) / W,
+ * e = -g/|g|. In a statistically steady bed the time mean of the momentum derivative
+ * vanishes, so the mean of FI + supports + continuity_defect - momentum_outflow is 1.
+ * The solids inertia uses alpha_s no less than the residual solids fraction, as in the
+ * assembly.
+ */
+namespace wetbed
+{
+using namespace dealii;
+
+template <int dim>
+typename TwoFluidSolver<dim>::InertialBudget
+TwoFluidSolver<dim>::evaluate_inertial_budget (const double dt) const
+{
+  const auto           &pp         = parameters.physical;
+  const Tensor<1, dim>  up         = upward_direction<dim> (pp.gravity);
+  const double          density[2] = {pp.gas_density, pp.particle_density};
+  const QGauss<dim>     quadrature (3);
+  const QGauss<dim - 1> face_quadrature (3);
+  FEValues<dim>         flow_values (
+      mapping, flow_fe, quadrature, update_values | update_gradients | update_JxW_values);
+  FEValues<dim> alpha_values (
+      mapping, alpha_fe, quadrature, update_values | update_gradients);
+  FEFaceValues<dim> flow_face (mapping,
+                               flow_fe,
+                               face_quadrature,
+                               update_values | update_normal_vectors | update_JxW_values);
+  FEFaceValues<dim> alpha_face (mapping, alpha_fe, face_quadrature, update_values);
+  const FEValuesExtractors::Vector velocity[2] = {FEValuesExtractors::Vector (0),
+                                                  FEValuesExtractors::Vector (dim)};
+  const unsigned int               n_q         = quadrature.size ();
+  std::vector<double>              a_new (n_q), a_old (n_q), a_lag (n_q),
+      a_face (face_quadrature.size ());
+  std::vector<Tensor<1, dim>> grad_a_lag (n_q), u_new (n_q), u_old (n_q), u_lag (n_q),
+      u_face (face_quadrature.size ());
+  std::vector<Tensor<2, dim>> grad_u_lag (n_q);
+  const bool                  conservative = parameters.conservative_momentum;
+
+  // the inertial fraction of phase k from the solids fraction (as in the assembly)
+  auto fraction = [&] (const unsigned int k, const double alpha_s)
+  { return k == 0 ? 1 - alpha_s : std::max (alpha_s, pp.residual_solids_fraction); };
+  // d fraction / d alpha_s: -1 for the gas, 1 for the solids above the residual
+  auto slope = [&] (const unsigned int k, const double alpha_s)
+  { return k == 0 ? -1.0 : (alpha_s > pp.residual_solids_fraction ? 1.0 : 0.0); };
+
+  InertialBudget budget;
+  auto           alpha_cell = alpha_dof_handler.begin_active ();
+  for (const auto &cell : flow_dof_handler.active_cell_iterators ())
+  {
+    if (cell->is_locally_owned ())
+    {
+      flow_values.reinit (cell);
+      alpha_values.reinit (alpha_cell);
+      alpha_values.get_function_values (alpha, a_new);
+      alpha_values.get_function_values (alpha_old2, a_old);
+      alpha_values.get_function_values (assembled_alpha, a_lag);
+      alpha_values.get_function_gradients (assembled_alpha, grad_a_lag);
+      for (unsigned int k = 0; k < 2; ++k)
+      {
+        flow_values[velocity[k]].get_function_values (flow_solution, u_new);
+        flow_values[velocity[k]].get_function_values (flow_old2, u_old);
+        flow_values[velocity[k]].get_function_values (assembled_flow, u_lag);
+        flow_values[velocity[k]].get_function_gradients (assembled_flow, grad_u_lag);
+        for (unsigned int q = 0; q < n_q; ++q)
+        {
+          const double JxW          = flow_values.JxW (q);
+          const double fraction_new = fraction (k, a_new[q]),
+                       fraction_old = fraction (k, a_old[q]),
+                       fraction_lag = fraction (k, a_lag[q]);
+          // D = div(alpha* u*) = u* . grad alpha* + alpha* div u*
+          const double divergence = slope (k, a_lag[q]) * (u_lag[q] * grad_a_lag[q]) +
+                                    fraction_lag * trace (grad_u_lag[q]);
+          const double u_up = u_new[q] * up;
+          // C - A, A the assembled form (see above)
+          double defect = (fraction_new - fraction_lag) * u_up / dt;
+          if (conservative)
+            defect += std::min (divergence, 0.0) * (u_new[q] - u_lag[q]) * up;
+          else
+            defect +=
+                (fraction_lag - fraction_old) * (u_old[q] * up) / dt + divergence * u_up;
+          budget.momentum += density[k] * fraction_new * u_up * JxW;
+          if (dt > 0)
+            budget.continuity_defect += density[k] * defect * JxW;
+        }
+      }
+      for (const auto &face : cell->face_iterators ())
+      {
+        if (!face->at_boundary () || (face->boundary_id () != boundary_ids.inlet &&
+                                      face->boundary_id () != boundary_ids.outlet))
+          continue;
+        flow_face.reinit (cell, face);
+        alpha_face.reinit (alpha_cell, face);
+        alpha_face.get_function_values (alpha, a_face);
+        for (unsigned int k = 0; k < 2; ++k)
+        {
+          flow_face[velocity[k]].get_function_values (flow_solution, u_face);
+          for (unsigned int q = 0; q < face_quadrature.size (); ++q)
+            budget.momentum_outflow +=
+                density[k] * fraction (k, a_face[q]) * (u_face[q] * up) *
+                (u_face[q] * flow_face.normal_vector (q)) * flow_face.JxW (q);
+        }
+      }
+    }
+    ++alpha_cell;
+  }
+  budget.momentum          = Utilities::MPI::sum (budget.momentum, communicator);
+  budget.continuity_defect = Utilities::MPI::sum (budget.continuity_defect, communicator);
+  budget.momentum_outflow  = Utilities::MPI::sum (budget.momentum_outflow, communicator);
+  return budget;
+}
+
+template <int dim>
+std::array<double, 3> TwoFluidSolver<dim>::evaluate_boundary_reactions () const
+{
+  std::array<double, 3> residual = {{0, 0, 0}};
+  for (const BoundaryCellSystem &system : boundary_cell_systems)
+    for (unsigned int i = 0; i < system.dofs.size (); ++i)
+      if (system.weight[i] != 0)
+      {
+        double row = -system.rhs (i);
+        for (unsigned int j = 0; j < system.dofs.size (); ++j)
+          row += system.matrix (i, j) * flow_solution (system.dofs[j]);
+        residual[system.boundary[i]] += system.weight[i] * row;
+      }
+  // the rows lack the boundary terms of the integration by parts, -int (-p' I + tau) n
+  // . v: what they leave unbalanced is the force the boundary exerts (0 on free rows)
+  for (double &r : residual)
+    r = Utilities::MPI::sum (r, communicator);
+  return residual;
+}
+
+template TwoFluidSolver<2>::InertialBudget
+TwoFluidSolver<2>::evaluate_inertial_budget (double) const;
+template TwoFluidSolver<3>::InertialBudget
+                               TwoFluidSolver<3>::evaluate_inertial_budget (double) const;
+template std::array<double, 3> TwoFluidSolver<2>::evaluate_boundary_reactions () const;
+template std::array<double, 3> TwoFluidSolver<3>::evaluate_boundary_reactions () const;
+} // namespace wetbed
