@@ -38,6 +38,8 @@ parser.add_argument("--jobs", type=int, default=1)
 parser.add_argument("--summarize-only", action="store_true")
 parser.add_argument("--maximum-wet-viscosity", type=float,
                     help="cap of mu_wet (Pa s) instead of the case's; a sensitivity study, kept in WORK/cap_<value>")
+parser.add_argument("--binary", help="the wetbed executable (default: build/wetbed); to finish a sweep "
+                    "with the build it was started with")
 parser.add_argument("--work", default=os.path.join(root, "build", "benchmarks", "liquid_loading_sweep"))
 args = parser.parse_args()
 cap, suffix = "", ""
@@ -62,7 +64,8 @@ def case(loading):
 
 def run(loading):
     prm, folder, log = case(loading)
-    code, wall = run_resumable([os.path.join(root, "build", "wetbed"), prm], folder, log,
+    binary = args.binary or os.path.join(root, "build", "wetbed")
+    code, wall = run_resumable([binary, prm], folder, log,
                                os.path.join(args.work, name(loading) + ".wall"))
     print(f"delta = {loading:g}e-2: exit {code}, {wall:.0f} s", flush=True)
 
