@@ -8,13 +8,15 @@ table for doc/benchmarks.md and draws doc/bubbling_bed_fi.png.
 usage: python3 benchmarks/bubbling_bed_fi.py [--end-time 5] [--start-up 1]
            [--models PDE algebraic] [--parallel] [--summarize-only]
 (build first: bash scripts/build.sh). --parallel runs the models at the same time, one
-core each; --summarize-only re-reads the monitors of an earlier run.
+core each; --summarize-only re-reads the monitors of an earlier run. Started again, an
+unfinished run continues from its checkpoint (every 500 steps and on SIGTERM) and a
+finished one is left alone; the wall time sums over the pieces (WORK/MODEL.wall).
 """
 import argparse
+import concurrent.futures
 import os
-import subprocess
 
-from benchmark_setup import read_case, repository_root, summarize_run, write_case
+from benchmark_setup import read_case, repository_root, run_resumable, summarize_run, write_case
 
 root = repository_root()
 parser = argparse.ArgumentParser()
@@ -32,25 +34,27 @@ base = read_case("bubbling_bed_2d")
 
 def case(model):
     return write_case(args.work, model, base, args.end_time,
-                      f"\nsubsection kinetic theory\n  set granular temperature = {model}\nend\n")
+                      f"\nsubsection kinetic theory\n  set granular temperature = {model}\nend\n"
+                      "subsection checkpoint\n  set interval = 500\n  set at end = false\nend\n")
+
+
+def run(model):
+    prm, folder, log = case(model)
+    code, wall = run_resumable([os.path.join(root, "build", "wetbed"), prm], folder, log,
+                               os.path.join(args.work, model + ".wall"))
+    print(f"{model}: exit {code}, {wall:.0f} s", flush=True)
 
 
 if not args.summarize_only:
-    runs = []
-    for model in args.models:
-        prm, folder, log = case(model)
-        p = subprocess.Popen([os.path.join(root, "build", "wetbed"), prm], stdout=open(log, "w"), stderr=subprocess.STDOUT)
-        if args.parallel:
-            runs.append(p)
-        else:
-            p.wait()
-    for p in runs:
-        p.wait()
+    with concurrent.futures.ThreadPoolExecutor(len(args.models) if args.parallel else 1) as pool:
+        list(pool.map(run, args.models))
 
 rows, series = [], {}
 for model in args.models:
     prm, folder, log = case(model)
-    summary, series[model] = summarize_run(folder, log, args.start_up)
+    wall_file = os.path.join(args.work, model + ".wall")
+    summary, series[model] = summarize_run(
+        folder, log, args.start_up, float(open(wall_file).read()) if os.path.exists(wall_file) else None)
     rows.append(dict(summary, model=model))
 
 print(f"| model | simulated | FI mean (t > {args.start_up:g} s) | 0.5 s windows (min, max) | steps | rejected | alpha_s range | Theta range (m²/s²) | mass drift | FGMRES its/step | wall (s) | s per simulated s |")
