@@ -1,3 +1,4 @@
+#include <wetbed/assembly/inertial_fraction.h>
 #include <wetbed/assembly/nitsche_wall.h>
 #include <wetbed/solvers/two_fluid_solver.h>
 
@@ -36,15 +37,9 @@ void TwoFluidSolver<dim>::assemble_flow_system (const BDFCoefficients &bdf,
   TimerOutput::Scope scope (timer, "flow assembly");
   flow_matrix = 0;
   boundary_cell_systems.clear ();
-  assembled_alpha = alpha;
-  assembled_flow  = flow_solution;
-  assembled_alpha.update_ghost_values ();
-  assembled_flow.update_ghost_values ();
-  if (parameters.conservative_momentum)
-  {
-    alpha_old.update_ghost_values ();
-    alpha_old2.update_ghost_values ();
-  }
+  // (copies of ghosted vectors: the ghost values come with them)
+  assembled_alpha         = alpha;
+  assembled_flow          = flow_solution;
   const Tensor<1, dim> up = upward_direction<dim> (parameters.physical.gravity);
   schur_matrix            = 0;
   flow_rhs                = 0;
@@ -193,21 +188,18 @@ void TwoFluidSolver<dim>::assemble_flow_system (const BDFCoefficients &bdf,
       Tensor<1, dim> continuity_force[2];
       if (conservative)
       {
-        const double residual      = pp.residual_solids_fraction;
-        history[0][0]              = (1 - a_s_old[q]) * rho_g;
-        history[0][1]              = (1 - a_s_old2[q]) * rho_g;
-        history[1][0]              = std::max (a_s_old[q], residual) * rho_s;
-        history[1][1]              = std::max (a_s_old2[q], residual) * rho_s;
-        const double divergence[2] = {
-            alpha_g * trace (grad_ug_lag[q]) - grad_alpha_s * ug_lag[q],
-            alpha_inertia * trace (grad_us_lag[q]) +
-                (alpha_s > residual ? grad_alpha_s * us_lag[q] : 0.0)};
-        const double         density[2] = {rho_g, rho_s};
-        const Tensor<1, dim> lagged[2]  = {ug_lag[q], us_lag[q]};
+        const double         residual           = pp.residual_solids_fraction;
+        const double         density[2]         = {rho_g, rho_s};
+        const Tensor<1, dim> lagged[2]          = {ug_lag[q], us_lag[q]};
+        const Tensor<2, dim> lagged_gradient[2] = {grad_ug_lag[q], grad_us_lag[q]};
         for (unsigned int k = 0; k < 2; ++k)
         {
-          continuity_mass[k]  = density[k] * std::max (divergence[k], 0.0);
-          continuity_force[k] = -density[k] * std::min (divergence[k], 0.0) * lagged[k];
+          history[k][0] = inertial_fraction (k, a_s_old[q], residual) * density[k];
+          history[k][1] = inertial_fraction (k, a_s_old2[q], residual) * density[k];
+          const double divergence = inertial_flux_divergence<dim> (
+              k, alpha_s, grad_alpha_s, lagged[k], lagged_gradient[k], residual);
+          continuity_mass[k]  = density[k] * std::max (divergence, 0.0);
+          continuity_force[k] = -density[k] * std::min (divergence, 0.0) * lagged[k];
         }
       }
       const Tensor<1, dim> history_g =
@@ -459,20 +451,24 @@ void TwoFluidSolver<dim>::assemble_flow_system (const BDFCoefficients &bdf,
     }
 
     cell->get_dof_indices (dofs);
-    // keep the unconstrained system of cells with boundary velocity DoFs (reactions)
+    // the weighted unconstrained rows of boundary velocity DoFs (the reactions)
     if (cell->at_boundary ())
     {
-      BoundaryCellSystem system{
-          dofs, cell_matrix, cell_rhs, std::vector<double> (n_dofs, 0.0), {}};
-      system.boundary.assign (n_dofs, 3);
-      bool any = false;
+      BoundaryCellSystem system{dofs, {}, {{0, 0, 0}}};
+      bool               any = false;
       for (unsigned int i = 0; i < n_dofs; ++i)
         for (unsigned int b = 0; b < 3 && component[i] < 2 * dim; ++b)
           if (boundary_velocity_dofs[b].is_element (dofs[i]))
           {
-            system.weight[i]   = up[component[i] % dim];
-            system.boundary[i] = b;
-            any                = true;
+            const double weight = up[component[i] % dim];
+            if (weight != 0)
+            {
+              system.row[b].resize (n_dofs, 0.0);
+              for (unsigned int j = 0; j < n_dofs; ++j)
+                system.row[b][j] += weight * cell_matrix (i, j);
+              system.rhs[b] += weight * cell_rhs (i);
+              any = true;
+            }
             break;
           }
       if (any)

@@ -1,3 +1,4 @@
+#include <wetbed/assembly/inertial_fraction.h>
 #include <wetbed/solvers/two_fluid_solver.h>
 
 #include <deal.II/base/mpi.h>
@@ -6,7 +7,8 @@
 
 /*
  * The inertial part of the vertical momentum budget of monitors.csv, the part that
- * closes what the boundary forces (wall_forces.cc) leave open.
+ * closes what the boundary forces (wall_forces.cc) leave open, and the consistent
+ * boundary reactions (the residuals of the boundary velocity rows).
  *
  * The momentum equations are assembled (BDF1 written; alpha*, u* the volume fraction
  * and velocity the last outer iteration linearised about, D_k = div(alpha_k* u_k*)) in
@@ -28,7 +30,7 @@
  *   FI + supports - 1 + continuity_defect = d(mixture_momentum)/dt + momentum_outflow
  * (all as shares of the buoyant bed weight W), with
  *   mixture_momentum  = sum_k int alpha_k rho_k u_k . e / W   (seconds),
- *   continuity_defect = sum_k int (C_k - N_k) . e / W,
+ *   continuity_defect = sum_k int (C_k - A_k) . e / W,
  *   momentum_outflow  = sum_k int_{inlet, outlet} alpha_k rho_k (u_k . e)(u_k . n) / W,
  * e = -g/|g|. In a statistically steady bed the time mean of the momentum derivative
  * vanishes, so the mean of FI + supports + continuity_defect - momentum_outflow is 1.
@@ -67,12 +69,9 @@ TwoFluidSolver<dim>::evaluate_inertial_budget (const double dt) const
   std::vector<Tensor<2, dim>> grad_u_lag (n_q);
   const bool                  conservative = parameters.conservative_momentum;
 
-  // the inertial fraction of phase k from the solids fraction (as in the assembly)
-  auto fraction = [&] (const unsigned int k, const double alpha_s)
-  { return k == 0 ? 1 - alpha_s : std::max (alpha_s, pp.residual_solids_fraction); };
-  // d fraction / d alpha_s: -1 for the gas, 1 for the solids above the residual
-  auto slope = [&] (const unsigned int k, const double alpha_s)
-  { return k == 0 ? -1.0 : (alpha_s > pp.residual_solids_fraction ? 1.0 : 0.0); };
+  const double residual = pp.residual_solids_fraction;
+  auto         fraction = [&] (const unsigned int k, const double alpha_s)
+  { return inertial_fraction (k, alpha_s, residual); };
 
   InertialBudget budget;
   auto           alpha_cell = alpha_dof_handler.begin_active ();
@@ -98,9 +97,9 @@ TwoFluidSolver<dim>::evaluate_inertial_budget (const double dt) const
           const double fraction_new = fraction (k, a_new[q]),
                        fraction_old = fraction (k, a_old[q]),
                        fraction_lag = fraction (k, a_lag[q]);
-          // D = div(alpha* u*) = u* . grad alpha* + alpha* div u*
-          const double divergence = slope (k, a_lag[q]) * (u_lag[q] * grad_a_lag[q]) +
-                                    fraction_lag * trace (grad_u_lag[q]);
+          // D = div(alpha* u*), as in the assembly
+          const double divergence = inertial_flux_divergence<dim> (
+              k, a_lag[q], grad_a_lag[q], u_lag[q], grad_u_lag[q], residual);
           const double u_up = u_new[q] * up;
           // C - A, A the assembled form (see above)
           double defect = (fraction_new - fraction_lag) * u_up / dt;
@@ -145,14 +144,12 @@ std::array<double, 3> TwoFluidSolver<dim>::evaluate_boundary_reactions () const
 {
   std::array<double, 3> residual = {{0, 0, 0}};
   for (const BoundaryCellSystem &system : boundary_cell_systems)
-    for (unsigned int i = 0; i < system.dofs.size (); ++i)
-      if (system.weight[i] != 0)
-      {
-        double row = -system.rhs (i);
-        for (unsigned int j = 0; j < system.dofs.size (); ++j)
-          row += system.matrix (i, j) * flow_solution (system.dofs[j]);
-        residual[system.boundary[i]] += system.weight[i] * row;
-      }
+    for (unsigned int b = 0; b < 3; ++b)
+    {
+      residual[b] -= system.rhs[b];
+      for (unsigned int j = 0; j < system.row[b].size (); ++j)
+        residual[b] += system.row[b][j] * flow_solution (system.dofs[j]);
+    }
   // the rows lack the boundary terms of the integration by parts, -int (-p' I + tau) n
   // . v: what they leave unbalanced is the force the boundary exerts (0 on free rows)
   for (double &r : residual)

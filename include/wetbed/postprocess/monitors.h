@@ -33,9 +33,10 @@ struct MonitorRow
   double wall_support_solids = 0, wall_support_gas = 0, distributor_support = 0,
          outlet_support = 0;
   // the inertial side of the budget (momentum_budget.cc): mixture momentum along -g over
-  // the buoyant weight (s), and as shares of the weight the force of the continuity
-  // residual of the advective momentum form and the momentum flux out of the domain;
-  // time mean: FI + supports + continuity_defect - momentum_outflow = 1
+  // the buoyant weight (s), and as shares of the weight the conservative momentum change
+  // minus the assembled inertia and the momentum flux out of the domain; at every step
+  // inlet + wall + outlet reactions + wall_support_solids + continuity_defect
+  // - momentum_outflow + correction_force - d(mixture_momentum)/dt = 1
   double mixture_momentum = 0, continuity_defect = 0, momentum_outflow = 0;
   // the momentum the velocity half of the compaction correction added, per step length,
   // as a share of the weight (it is not a boundary force: with drag, only part of the

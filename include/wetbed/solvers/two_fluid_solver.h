@@ -174,8 +174,9 @@ private:
   WallForces evaluate_wall_forces () const;
   /** The inertial side of the vertical momentum budget, after an accepted step of
    * length dt (source/postprocess/momentum_budget.cc): the mixture momentum along -g
-   * (kg m/s, per metre depth in 2D), the force of the continuity residual that the
-   * advective form of the momentum equations adds, and the momentum flux out through
+   * (kg m/s, per metre depth in 2D), the difference between the conservative momentum
+   * change and the assembled inertia (the velocity times the continuity residual of the
+   * discrete fractions; large for the advective form), and the momentum flux out through
    * the inlet and outlet (N); collective. */
   struct InertialBudget
   {
@@ -264,17 +265,15 @@ private:
   // the volume fraction and flow state the last flow assembly linearised about
   AlphaVector assembled_alpha;
   BlockVector assembled_flow;
-  // the unconstrained cell systems of the last flow assembly on the cells that hold
-  // velocity DoFs on the inlet, the walls or the outlet, for the consistent boundary
-  // reactions; weight: the component of -g/|g| of each such DoF's direction (0 for the
-  // others), boundary: 0 inlet, 1 walls, 2 outlet (a DoF on two: the first)
+  // for the consistent boundary reactions: on each cell of the last flow assembly that
+  // holds velocity DoFs on the inlet, the walls or the outlet (b = 0, 1, 2; a DoF on
+  // two: the first), the sum of its unconstrained rows of boundary b weighted by the
+  // component of -g/|g| along each DoF's direction, w_b^T K (row[b]) and w_b^T f (rhs[b])
   struct BoundaryCellSystem
   {
     std::vector<dealii::types::global_dof_index> dofs;
-    dealii::FullMatrix<double>                   matrix;
-    dealii::Vector<double>                       rhs;
-    std::vector<double>                          weight;
-    std::vector<unsigned int>                    boundary;
+    std::array<std::vector<double>, 3>           row;
+    std::array<double, 3>                        rhs;
   };
   std::vector<BoundaryCellSystem> boundary_cell_systems;
   std::array<dealii::IndexSet, 3> boundary_velocity_dofs;
