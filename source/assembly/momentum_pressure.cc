@@ -4,6 +4,7 @@
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/manifold.h>
 
 namespace wetbed
 {
@@ -400,8 +401,26 @@ void TwoFluidSolver<dim>::assemble_flow_system (const BDFCoefficients &bdf,
                                    std::max (a, pp.residual_solids_fraction) * rho_s,
                                    us_face[q].norm ()),
                             compaction + stress.kinetic_pressure}}};
-          add_nitsche_no_penetration (
-              face_values, q, component, phases, nitsche_gamma, h, cell_matrix, cell_rhs);
+          // the wall's own normal where the wall is curved (a manifold other than
+          // flat), oriented as the mapped one
+          Tensor<1, dim> wall_normal = n;
+          if (face->manifold_id () != numbers::flat_manifold_id)
+          {
+            wall_normal = face->get_manifold ().normal_vector (
+                face, face_values.quadrature_point (q));
+            wall_normal /= wall_normal.norm ();
+            if (wall_normal * n < 0)
+              wall_normal *= -1.0;
+          }
+          add_nitsche_no_penetration (face_values,
+                                      q,
+                                      wall_normal,
+                                      component,
+                                      phases,
+                                      nitsche_gamma,
+                                      h,
+                                      cell_matrix,
+                                      cell_rhs);
         }
         // the slip is relative to a moving wall: C P_t (u - u_w), P_t u_w on the rhs
         Tensor<1, dim> wall_motion;

@@ -7,6 +7,7 @@ using namespace dealii;
 template <int dim>
 void add_nitsche_no_penetration (const FEFaceValues<dim>           &face_values,
                                  const unsigned int                 q,
+                                 const Tensor<1, dim>              &n,
                                  const std::vector<unsigned int>   &component,
                                  const std::array<NitschePhase, 2> &phases,
                                  const double                       gamma,
@@ -14,10 +15,9 @@ void add_nitsche_no_penetration (const FEFaceValues<dim>           &face_values,
                                  FullMatrix<double>                &cell_matrix,
                                  Vector<double>                    &cell_rhs)
 {
-  const Tensor<1, dim> n        = face_values.normal_vector (q);
-  const double         JxW      = face_values.JxW (q);
-  const unsigned int   n_dofs   = component.size ();
-  const unsigned int   pressure = 2 * dim;
+  const double       JxW      = face_values.JxW (q);
+  const unsigned int n_dofs   = component.size ();
+  const unsigned int pressure = 2 * dim;
   // per dof: its phase (0, 1; 2 for the pressure), phi n_c (the normal part of a vector
   // shape function), and n.tau(phi) n / mu-free parts
   std::vector<unsigned int> phase_of (n_dofs);
@@ -69,6 +69,7 @@ void add_nitsche_no_penetration (const FEFaceValues<dim>           &face_values,
 
 template void add_nitsche_no_penetration<2> (const FEFaceValues<2> &,
                                              unsigned int,
+                                             const Tensor<1, 2> &,
                                              const std::vector<unsigned int> &,
                                              const std::array<NitschePhase, 2> &,
                                              double,
@@ -77,6 +78,7 @@ template void add_nitsche_no_penetration<2> (const FEFaceValues<2> &,
                                              Vector<double> &);
 template void add_nitsche_no_penetration<3> (const FEFaceValues<3> &,
                                              unsigned int,
+                                             const Tensor<1, 3> &,
                                              const std::vector<unsigned int> &,
                                              const std::array<NitschePhase, 2> &,
                                              double,

@@ -250,7 +250,11 @@ void LinearSolverParameters::declare_parameters (ParameterHandler &prm)
       "ML smoother on the two-velocity block. Chebyshev (default): more "
       "FGMRES iterations than ILU but cheaper ones (2D bed start-up 29 vs "
       "51 per solve, 3D column start-up 145 s vs 229 s); ILU sees the drag "
-      "coupling of the two velocities inside a node.");
+      "coupling of the two velocities inside a node. block Gauss-Seidel: "
+      "symmetric Gauss-Seidel on node blocks (all velocity components of a "
+      "support point solved together); needed for Nitsche no-penetration on "
+      "curved walls, whose penalty couples the components of a wall node "
+      "(T11: the point smoothers stall).");
   prm.declare_entry (
       "rotation modes",
       "false",

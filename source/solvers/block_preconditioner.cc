@@ -11,7 +11,8 @@ BlockPreconditioner::BlockPreconditioner (const LinearSolverParameters &paramete
 
 void BlockPreconditioner::build_velocity (
     const dealii::TrilinosWrappers::SparseMatrix &A,
-    const std::vector<std::vector<double>>       &near_null_space)
+    const std::vector<std::vector<double>>       &near_null_space,
+    const unsigned int                            dofs_per_node)
 {
   dealii::TrilinosWrappers::PreconditionAMG::AdditionalData data;
   data.elliptic              = true;
@@ -28,6 +29,11 @@ void BlockPreconditioner::build_velocity (
   for (unsigned int m = 0; m < near_null_space.size (); ++m)
     for (int i = 0; i < rows.NumMyElements (); ++i)
       (*null_space)[m][i] = near_null_space[m][i];
+  // aggregate whole nodes (all velocity components of a support point together) and,
+  // with the block Gauss-Seidel smoother, relax each node's block exactly: on a curved
+  // wall the Nitsche penalty couples the Cartesian components of a node through n n^T,
+  // which point smoothers cannot see (a tangential motion looks stiff to them)
+  ml.set ("PDE equations", static_cast<int> (dofs_per_node));
   ml.set ("null space: type", "pre-computed");
   ml.set ("null space: dimension", null_space->NumVectors ());
   ml.set ("null space: vectors", null_space->Values ());

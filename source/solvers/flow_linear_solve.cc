@@ -40,6 +40,10 @@ void TwoFluidSolver<dim>::build_velocity_preconditioner (const double current_dt
   const Quadrature<dim> nodes (flow_fe.get_unit_support_points ());
   FEValues<dim>         node_values (mapping, flow_fe, nodes, update_quadrature_points);
   std::vector<types::global_dof_index> dofs (flow_fe.n_dofs_per_cell ());
+  // node blocks: ML aggregates nodes and smooths node blocks when the 2 dim velocity
+  // DoFs of every support point are consecutive rows (the numbering keeps them so;
+  // checked here, and the blocks are dropped where it would not hold)
+  bool nodes_contiguous = true;
   for (const auto &cell : flow_dof_handler.active_cell_iterators ())
     if (cell->is_locally_owned ())
     {
@@ -47,9 +51,11 @@ void TwoFluidSolver<dim>::build_velocity_preconditioner (const double current_dt
       node_values.reinit (cell);
       for (unsigned int i = 0; i < dofs.size (); ++i)
       {
-        const unsigned int c = flow_fe.system_to_component_index (i).first;
+        const auto [c, node] = flow_fe.system_to_component_index (i);
         if (c >= 2 * dim || !owned.is_element (dofs[i]))
           continue;
+        if (dofs[i] != dofs[flow_fe.component_to_system_index (0, node)] + c)
+          nodes_contiguous = false;
         const auto         row   = owned.index_within_set (dofs[i]);
         const unsigned int phase = c / dim, d = c % dim;
         modes[phase * per_phase + d][row] = 1.0;
@@ -66,7 +72,9 @@ void TwoFluidSolver<dim>::build_velocity_preconditioner (const double current_dt
           }
       }
     }
-  preconditioner->build_velocity (flow_matrix.block (0, 0), modes);
+  nodes_contiguous = Utilities::MPI::min (nodes_contiguous ? 1 : 0, communicator) == 1;
+  preconditioner->build_velocity (
+      flow_matrix.block (0, 0), modes, nodes_contiguous ? 2 * dim : 1);
   solves_since_build     = 0;
   iterations_after_build = 0;
   dt_at_build            = current_dt;

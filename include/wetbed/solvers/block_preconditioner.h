@@ -32,9 +32,12 @@ public:
 
   /** Builds (or rebuilds) the velocity hierarchy from the current A with the given
    * near-null space: one vector per mode, each with the locally owned velocity rows in
-   * order (translations of each velocity component, and rigid rotations if chosen). */
+   * order (translations of each velocity component, and rigid rotations if chosen).
+   * dofs_per_node: the velocity DoFs of one support point, consecutive rows (ML's
+   * "PDE equations": node aggregation and node-block smoothing), or 1. */
   void build_velocity (const dealii::TrilinosWrappers::SparseMatrix &velocity_matrix,
-                       const std::vector<std::vector<double>>       &near_null_space);
+                       const std::vector<std::vector<double>>       &near_null_space,
+                       unsigned int                                  dofs_per_node);
   /** Builds the Schur hierarchy from L_c. */
   void build_schur (const dealii::TrilinosWrappers::SparseMatrix &schur_matrix);
   void set_coupling (const dealii::TrilinosWrappers::SparseMatrix &gradient_block)
