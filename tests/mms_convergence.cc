@@ -5,7 +5,7 @@
 //                 flow discretisation is measured alone), Wen-Yu drag, constant solids
 //                 viscosity and the Johnson-Jackson frictional pressure active (T3-lite).
 // Sources: the strong residual of the exact fields, differentiated with nested Sacado.
-// usage: test_mms_convergence DIM single|two-fluid SOURCE_DIR WORK_DIR
+//   transient: the same fields times s(t) (BDF1/BDF2 rates in dt), see main().
 #include "test_utilities.h"
 
 #include <wetbed/closures/drag/drag_model.h>
@@ -17,6 +17,7 @@
 
 #include <Sacado.hpp>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -38,6 +39,13 @@ struct ExactFields
 {
   bool two_fluid;
   bool rotation; // T11: both phases rotate about the axis, omega(z) = 1 + z^2/2
+  /** s(t) of a transient solution u(x) s(t), p(x) s(t) (1 when steady); with s'(t)
+   * in its place the fields are the time derivatives */
+  double scale = 1;
+  /** quadratic velocities and a linear pressure: in the Q2/Q1 spaces on affine cells,
+   * so that the discrete solution has no spatial error and a transient run measures
+   * the time discretisation alone */
+  bool polynomial = false;
 
   Number alpha_s (const Number *x) const
   {
@@ -61,14 +69,22 @@ struct ExactFields
     if (rotation)
       return rotating (x, c);
     const Number z = dim == 3 ? x[2] : Number (0.0);
+    if (polynomial)
+    {
+      if (c == 0)
+        return scale * (0.5 * x[0] * x[1] + 0.2 * x[1] * x[1] + 0.1 + 0.1 * z * x[0]);
+      if (c == 1)
+        return scale * (0.3 - 0.5 * x[0] * x[0] + 0.25 * x[1]);
+      return scale * (0.2 * x[0] * x[1] + 0.1 * z * z);
+    }
     switch (c)
     {
     case 0:
-      return 0.5 * sin (pi * x[0]) * sin (pi * x[1]) + 0.2 * cos (z);
+      return scale * (0.5 * sin (pi * x[0]) * sin (pi * x[1]) + 0.2 * cos (z));
     case 1:
-      return 0.5 * cos (pi * x[0]) * cos (pi * x[1]) + 0.3;
+      return scale * (0.5 * cos (pi * x[0]) * cos (pi * x[1]) + 0.3);
     default:
-      return 0.4 * sin (pi * x[0]) * cos (pi * z) * x[1];
+      return scale * 0.4 * sin (pi * x[0]) * cos (pi * z) * x[1];
     }
   }
   Number solids (const Number *x, const unsigned int c) const
@@ -78,14 +94,22 @@ struct ExactFields
     if (rotation)
       return rotating (x, c);
     const Number z = dim == 3 ? x[2] : Number (0.0);
+    if (polynomial)
+    {
+      if (c == 0)
+        return scale * (0.3 * x[0] * x[0] - 0.2 * x[1] + 0.05);
+      if (c == 1)
+        return scale * (0.1 + 0.2 * x[0] * x[1] - 0.1 * x[1] * x[1]);
+      return scale * (0.1 * x[1] * z);
+    }
     switch (c)
     {
     case 0:
-      return 0.3 * cos (pi * x[0]) * sin (pi * x[1]) * (1.0 + 0.5 * z);
+      return scale * 0.3 * cos (pi * x[0]) * sin (pi * x[1]) * (1.0 + 0.5 * z);
     case 1:
-      return -0.2 * sin (pi * x[0]) * cos (pi * x[1]) + 0.1;
+      return scale * (-0.2 * sin (pi * x[0]) * cos (pi * x[1]) + 0.1);
     default:
-      return 0.2 * cos (pi * x[1]) * sin (pi * z);
+      return scale * 0.2 * cos (pi * x[1]) * sin (pi * z);
     }
   }
   Number pressure (const Number *x) const
@@ -96,7 +120,9 @@ struct ExactFields
       return 0.5 * (x[0] * x[0] + x[1] * x[1]) +
              (dim == 3 ? 0.1 * x[dim - 1] : Number (0));
     const Number z = dim == 3 ? x[2] : Number (0.0);
-    return 2.0 * cos (pi * x[0]) * sin (pi * x[1]) + z * x[0];
+    if (polynomial)
+      return scale * (2.0 * x[0] - x[1] + 0.5 * z);
+    return scale * (2.0 * cos (pi * x[0]) * sin (pi * x[1]) + z * x[0]);
   }
 };
 
@@ -106,8 +132,11 @@ class ManufacturedTwoFluid : public ManufacturedSolution<dim>
 public:
   ManufacturedTwoFluid (const bool        two_fluid,
                         const Parameters &p,
-                        const bool        rotation = false)
-      : two_fluid (two_fluid), rotation (rotation), parameters (p),
+                        const bool        rotation   = false,
+                        const bool        transient  = false,
+                        const bool        polynomial = false)
+      : two_fluid (two_fluid), rotation (rotation), transient (transient),
+        polynomial (polynomial), parameters (p),
         drag (closures::create_drag_model (p.drag_model)),
         stress (closures::create_solids_stress_model (
             p.solids_stress, p.physical, p.kinetic_theory, p.wet))
@@ -116,12 +145,23 @@ public:
 
   bool slip_walls () const override { return rotation; }
 
+  /** s(t) = 1 + sin(2 pi t)/2 of the transient fields, s'(t); 1 and 0 when steady. */
+  double scale () const
+  {
+    return transient ? 1.0 + 0.5 * std::sin (2 * pi * this->time ()) : 1.0;
+  }
+  double scale_rate () const
+  {
+    return transient ? pi * std::cos (2 * pi * this->time ()) : 0.0;
+  }
+
   double solids_fraction (const Point<dim> &x) const override
   {
     double c[dim];
     for (unsigned int d = 0; d < dim; ++d)
       c[d] = x[d];
-    return ExactFields<dim, double>{two_fluid, rotation}.alpha_s (c);
+    return ExactFields<dim, double>{two_fluid, rotation, scale (), polynomial}.alpha_s (
+        c);
   }
   Tensor<1, dim> gas_velocity (const Point<dim> &x) const override
   {
@@ -136,7 +176,8 @@ public:
     double c[dim];
     for (unsigned int d = 0; d < dim; ++d)
       c[d] = x[d];
-    return ExactFields<dim, double>{two_fluid, rotation}.pressure (c);
+    return ExactFields<dim, double>{two_fluid, rotation, scale (), polynomial}.pressure (
+        c);
   }
   Tensor<1, dim> gas_momentum_source (const Point<dim> &x) const override
   {
@@ -177,13 +218,15 @@ private:
     Tensor<1, dim> div_tau_g, div_tau_s; // divergence of the viscous stresses
   };
 
-  Tensor<1, dim> velocity (const Point<dim> &x, const bool gas) const
+  Tensor<1, dim>
+  velocity (const Point<dim> &x, const bool gas, const bool time_derivative = false) const
   {
     double c[dim];
     for (unsigned int d = 0; d < dim; ++d)
       c[d] = x[d];
-    ExactFields<dim, double> f{two_fluid, rotation};
-    Tensor<1, dim>           u;
+    ExactFields<dim, double> f{
+        two_fluid, rotation, time_derivative ? scale_rate () : scale (), polynomial};
+    Tensor<1, dim> u;
     for (unsigned int d = 0; d < dim; ++d)
       u[d] = gas ? f.gas (c, d) : f.solids (c, d);
     return u;
@@ -212,7 +255,7 @@ private:
     F2 c[dim];
     for (unsigned int d = 0; d < dim; ++d)
       c[d] = F2 (dim, d, F1 (dim, d, x[d]));
-    ExactFields<dim, F2> f{two_fluid, rotation};
+    ExactFields<dim, F2> f{two_fluid, rotation, scale (), polynomial};
     Derived              s;
     const F2             a = f.alpha_s (c), p = f.pressure (c);
     s.alpha = a.val ().val ();
@@ -271,9 +314,10 @@ private:
     const Tensor<2, dim> &g             = gas ? s.grad_ug : s.grad_us;
     const closures::GasParticleProperties gp{
         pp.gas_density, pp.gas_viscosity, pp.particle_diameter};
-    const double   beta = drag->coefficient (alpha_inertia, (s.ug - s.us).norm (), gp);
-    Tensor<1, dim> r = inertia_k * rho_k * (g * u) - (gas ? s.div_tau_g : s.div_tau_s) +
-                       alpha_k * s.grad_p;
+    const double beta = drag->coefficient (alpha_inertia, (s.ug - s.us).norm (), gp);
+    // alpha_s is steady: d(alpha_k u_k)/dt = alpha_k du_k/dt in both forms
+    Tensor<1, dim> r = inertia_k * rho_k * (velocity (x, gas, true) + g * u) -
+                       (gas ? s.div_tau_g : s.div_tau_s) + alpha_k * s.grad_p;
     // the conservative form's rho_k div(alpha_k u_k) u_k (steady: the time parts vanish)
     if (parameters.conservative_momentum)
     {
@@ -296,17 +340,26 @@ private:
     return r;
   }
 
-  bool                                         two_fluid, rotation;
+  bool                                         two_fluid, rotation, transient, polynomial;
   Parameters                                   parameters;
   std::unique_ptr<closures::DragModel>         drag;
   std::unique_ptr<closures::SolidsStressModel> stress;
 };
 
-std::string case_text (const int          dim,
-                       const std::string &mesh,
-                       const unsigned int refinement,
-                       const std::string &folder,
-                       const std::string &no_penetration)
+/** Time stepping of a run: steady (one step of 1e4, BDF1) or a transient ladder rung. */
+struct TimeStepping
+{
+  double       end_time  = 1e4;
+  unsigned int steps     = 1;
+  unsigned int bdf_order = 1;
+};
+
+std::string case_text (const int           dim,
+                       const std::string  &mesh,
+                       const unsigned int  refinement,
+                       const std::string  &folder,
+                       const std::string  &no_penetration,
+                       const TimeStepping &time)
 {
   std::ostringstream s;
   s << "set dimension = " << dim << "\n"
@@ -326,9 +379,11 @@ std::string case_text (const int          dim,
     << " set gas wall condition = " << (no_penetration.empty () ? "no-slip" : "free-slip")
     << "\n set solids wall condition = free-slip\n set no-penetration = "
     << (no_penetration.empty () ? "Nitsche" : no_penetration) << "\nend\n"
-    << "subsection time stepping\n set end time = 1e4\n set initial time step = 1e4\n"
-    << " set maximum time step = 1e4\n set bdf order = 1\n set outer iterations = 6\n "
-       "set adaptive = false\nend\n"
+    << "subsection time stepping\n set end time = " << time.end_time
+    << "\n set initial time step = " << time.end_time / time.steps
+    << "\n set maximum time step = " << time.end_time / time.steps
+    << "\n set bdf order = " << time.bdf_order
+    << "\n set outer iterations = 6\n set adaptive = false\nend\n"
     << "subsection linear solver\n set relative tolerance = 1e-10\n set maximum "
        "iterations = 5000\n"
     // the Nitsche penalty on the curved wall couples the components of a node: node
@@ -343,12 +398,15 @@ std::string case_text (const int          dim,
 
 /** Errors (u_g L2, H1, u_s L2, H1, p' L2) and the cell count of one refinement level. */
 template <int dim>
-std::pair<std::array<double, 5>, double>
-run_level (const Parameters &parameters, const bool two_fluid, const bool rotation)
+std::pair<std::array<double, 5>, double> run_level (const Parameters &parameters,
+                                                    const bool        two_fluid,
+                                                    const bool        rotation,
+                                                    const bool        transient,
+                                                    const bool        polynomial)
 {
   TwoFluidSolver<dim> solver (parameters, MPI_COMM_WORLD);
-  solver.set_manufactured_solution (
-      std::make_shared<ManufacturedTwoFluid<dim>> (two_fluid, parameters, rotation));
+  solver.set_manufactured_solution (std::make_shared<ManufacturedTwoFluid<dim>> (
+      two_fluid, parameters, rotation, transient, polynomial));
   solver.run ();
   const auto r = solver.compute_errors ();
   return {{r.gas_velocity_l2,
@@ -360,47 +418,120 @@ run_level (const Parameters &parameters, const bool two_fluid, const bool rotati
 }
 } // namespace
 
-// usage: test_mms_convergence DIM single|two-fluid|rotation-Nitsche|rotation-strong
-//        SOURCE_DIR WORK_DIR [EXTRA_SETTINGS.prm]
-//        SOURCE_DIR WORK_DIR
+/** "1,2,3" -> {1, 2, 3} */
+std::vector<unsigned int> numbers (const std::string &list)
+{
+  std::vector<unsigned int> values;
+  std::stringstream         in (list);
+  for (std::string item; std::getline (in, item, ',');)
+    values.push_back (std::stoul (item));
+  return values;
+}
+
+// usage: test_mms_convergence DIM KIND SOURCE_DIR WORK_DIR [EXTRA_SETTINGS.prm|-]
+//                             [LEVELS] [STEPS]
+//   KIND: single | two-fluid | rotation-Nitsche | rotation-strong: steady, a ladder of
+//           LEVELS (default 1,2,3 in 2D, 0,1,2 in 3D);
+//         transient-bdf1 | transient-bdf2: quadratic velocities and a linear pressure
+//           (in the discrete spaces on affine cells: no spatial error) times
+//           s(t) = 1 + sin(2 pi t)/2 over 0 < t <= 0.3, on the first of LEVELS, a ladder
+//           of STEPS time steps (default 12,24,48): the rate of the time discretisation;
+//           the frictional pressure is off (onset 0.5 above the fields' alpha_s), as its
+//           discrete gradient is not exact for these fields;
+//         space-time-bdf1 | space-time-bdf2: the two-fluid fields times s(t), LEVELS
+//           and STEPS paired (default 3,6,12 steps): space and time refined together
+//   LEVELS, STEPS: comma-separated lists replacing the defaults (work-precision study,
+//         benchmarks/mms_work_precision.py); each run prints a "run:" line with its
+//         cells, steps, errors and wall time
 int main (int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi (argc, argv, 1);
   const int                                dim  = std::stoi (argv[1]);
   const std::string                        kind = argv[2];
+  // transient-*: polynomial fields in space (the time error alone); space-time-*: the
+  // trigonometric fields of two-fluid times s(t) (space and time errors together)
+  const bool polynomial = kind.rfind ("transient", 0) == 0;
+  const bool transient  = polynomial || kind.rfind ("space-time", 0) == 0;
   const bool two_fluid = kind != "single", rotation = kind.rfind ("rotation", 0) == 0;
   const std::string no_penetration = rotation ? kind.substr (kind.find ('-') + 1) : "";
   const std::string source = argv[3], work = argv[4];
   // diagnosis: a file of further settings appended to every level's case
   std::string extra_settings;
-  if (argc > 5)
+  if (argc > 5 && std::string (argv[5]) != "-")
   {
     std::ifstream      in (argv[5]);
     std::ostringstream text;
     text << in.rdbuf ();
     extra_settings = text.str ();
   }
+  if (polynomial)
+    extra_settings =
+        "subsection solids stress\n set frictional onset = 0.5\nend\n" + extra_settings;
   const std::string mesh =
       source + (dim == 2 ? "/tests/meshes/square.geo" : "/tests/meshes/cylinder.geo");
-  const std::vector<unsigned int> levels =
+  std::vector<unsigned int> levels =
       dim == 2 ? std::vector<unsigned int>{1, 2, 3} : std::vector<unsigned int>{0, 1, 2};
+  if (argc > 6)
+    levels = numbers (argv[6]);
+  // transient: the finest mesh, where the spatial error is well below the temporal one
+  std::vector<unsigned int> steps = polynomial
+                                        ? std::vector<unsigned int>{12, 24, 48}
+                                        : (transient ? std::vector<unsigned int>{3, 6, 12}
+                                                     : std::vector<unsigned int>{1});
+  if (argc > 7)
+    steps = numbers (argv[7]);
+  const unsigned int bdf_order = kind.back () == '2' ? 2 : 1;
+  // the (level, steps) pairs: a time ladder on one mesh, a space ladder at one step, or
+  // (space-time) both refined together
+  std::vector<std::pair<unsigned int, unsigned int>> runs;
+  if (polynomial)
+    for (const unsigned int n : steps)
+      runs.emplace_back (levels.front (), n); // no spatial error: the coarsest mesh
+  else if (transient)
+  {
+    if (levels.size () != steps.size ())
+    {
+      std::cerr << "space-time runs need as many LEVELS as STEPS\n";
+      return 1;
+    }
+    for (unsigned int i = 0; i < levels.size (); ++i)
+      runs.emplace_back (levels[i], steps[i]);
+  }
+  else
+    for (const unsigned int level : levels)
+      runs.emplace_back (level, 1);
 
   std::vector<std::array<double, 5>> errors;
   std::vector<double>                sizes;
-  for (const unsigned int level : levels)
+  for (const auto &[level, n_steps] : runs)
   {
+    TimeStepping time;
+    if (transient)
+      time = TimeStepping{0.3, n_steps, bdf_order};
     const std::string folder = work + "/mms_" + std::to_string (dim) + "d_" + kind + "_" +
-                               std::to_string (level);
+                               std::to_string (level) +
+                               (transient ? "_" + std::to_string (n_steps) : "");
     std::filesystem::create_directories (folder);
     const std::string prm_file = folder + "/case.prm";
-    std::ofstream (prm_file) << case_text (dim, mesh, level, folder, no_penetration)
+    std::ofstream (prm_file) << case_text (dim, mesh, level, folder, no_penetration, time)
                              << extra_settings;
     dealii::ParameterHandler prm;
     const Parameters         parameters = Parameters::read (prm_file, prm);
-    const auto [e, n_cells] = dim == 2 ? run_level<2> (parameters, two_fluid, rotation)
-                                       : run_level<3> (parameters, two_fluid, rotation);
+    const auto               start      = std::chrono::steady_clock::now ();
+    const auto [e, n_cells] =
+        dim == 2 ? run_level<2> (parameters, two_fluid, rotation, transient, polynomial)
+                 : run_level<3> (parameters, two_fluid, rotation, transient, polynomial);
+    const double wall =
+        std::chrono::duration<double> (std::chrono::steady_clock::now () - start)
+            .count ();
+    std::cout << "run: level " << level << " cells " << n_cells << " steps " << n_steps
+              << " bdf " << bdf_order << " wall " << wall << " errors";
+    for (const double value : e)
+      std::cout << " " << std::setprecision (6) << std::scientific << value;
+    std::cout << std::defaultfloat << std::endl;
     errors.push_back (e);
-    sizes.push_back (std::pow (n_cells, -1.0 / dim));
+    sizes.push_back (polynomial ? time.end_time / n_steps
+                                : std::pow (n_cells, -1.0 / dim));
   }
 
   const std::array<std::string, 5> names = {
@@ -409,10 +540,14 @@ int main (int argc, char **argv)
   // cells) the velocity converges at 2.6 (L2) and 1.56 (H1) against 3.6 and 2.6 with
   // the strong constraints; asserted as measured, the gap is discussed in
   // doc/theory.md ("No penetration by symmetric Nitsche")
-  const std::array<double, 5> expected =
-      no_penetration == "Nitsche" ? std::array<double, 5>{2.7, 1.7, 2.7, 1.7, 2}
-                                  : std::array<double, 5>{3, 2, 3, 2, 2};
-  std::cout << "MMS " << dim << "D " << argv[2] << "\n";
-  testing::report_rates (errors, sizes, names, expected);
+  std::array<double, 5> expected = no_penetration == "Nitsche"
+                                       ? std::array<double, 5>{2.7, 1.7, 2.7, 1.7, 2}
+                                       : std::array<double, 5>{3, 2, 3, 2, 2};
+  if (polynomial)
+    expected.fill (bdf_order);
+  std::cout << "MMS " << dim << "D " << argv[2] << (polynomial ? " (rates in dt)" : "")
+            << "\n";
+  if (errors.size () > 1)
+    testing::report_rates (errors, sizes, names, expected);
   return testing::finish ("mms_convergence");
 }

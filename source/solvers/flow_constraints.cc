@@ -25,6 +25,8 @@ void TwoFluidSolver<dim>::make_flow_constraints (const double at_time)
   const ComponentMask              solids_mask = flow_fe.component_mask (solids);
   const auto                       ids         = boundary_ids;
 
+  if (manufactured)
+    manufactured->set_time (at_time); // the step's exact boundary values and sources
   flow_constraints.clear ();
   flow_constraints.reinit (relevant);
   make_mesh_constraints (flow_dof_handler, flow_constraints);

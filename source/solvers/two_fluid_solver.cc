@@ -67,7 +67,7 @@ TwoFluidSolver<dim>::~TwoFluidSolver ()
 
 template <int dim>
 void TwoFluidSolver<dim>::set_manufactured_solution (
-    std::shared_ptr<const ManufacturedSolution<dim>> m)
+    std::shared_ptr<ManufacturedSolution<dim>> m)
 {
   manufactured = m;
 }
@@ -140,6 +140,8 @@ void TwoFluidSolver<dim>::set_initial_state ()
 {
   const auto          &ic = parameters.initial;
   const Tensor<1, dim> up = upward_direction<dim> (parameters.physical.gravity);
+  if (manufactured)
+    manufactured->set_time (time);
 
   // solids fraction at the vertices (Q1 nodes)
   const Point<dim>                       origin;

@@ -28,12 +28,18 @@ dealii::Tensor<1, dim> central_difference_gradient (const Field              &f,
  * Source terms a verification run adds to the equations, and the exact fields it
  * imposes on the boundary and compares against. The solver calls these only when a
  * manufactured solution is attached (tests/), never in a production run.
+ *
+ * A time-dependent solution reads time(): the solver sets it to the time the step
+ * solves for (t^{n+1}) before it builds the step's constraints and sources, to 0 for
+ * the initial state; the errors after run() are those at the end time.
  */
 template <int dim>
 class ManufacturedSolution
 {
 public:
   virtual ~ManufacturedSolution () = default;
+  void   set_time (const double t) { current_time = t; }
+  double time () const { return current_time; }
   /** true: the walls keep the .prm's slip conditions (the exact fields satisfy u.n = 0
    * and a zero tangential traction there); false: exact velocities on the walls. */
   virtual bool slip_walls () const { return false; }
@@ -90,6 +96,9 @@ public:
   {
     return 0;
   }
+
+private:
+  double current_time = 0;
 };
 
 /** The manufactured Theta as a deal.II Function (error norms, interpolation). */

@@ -50,7 +50,7 @@ public:
   ~TwoFluidSolver ();
 
   /** Attach a manufactured solution (verification runs only) before run(). */
-  void set_manufactured_solution (std::shared_ptr<const ManufacturedSolution<dim>> mms);
+  void set_manufactured_solution (std::shared_ptr<ManufacturedSolution<dim>> mms);
 
   enum class RunEnd
   {
@@ -251,7 +251,7 @@ private:
   closures::GasParticleProperties              gas_particle;
   mutable dealii::FunctionParser<1>            inlet_velocity_function;
   dealii::FunctionParser<3> held_velocity_function{3}; // u_s(x, y, z, t) where held
-  std::shared_ptr<const ManufacturedSolution<dim>> manufactured;
+  std::shared_ptr<ManufacturedSolution<dim>> manufactured;
 
   VolumeFractionTransport<dim>         transport;
   std::unique_ptr<BlockPreconditioner> preconditioner;
