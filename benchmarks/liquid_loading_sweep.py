@@ -16,12 +16,20 @@ unfinished runs from their checkpoints (`wetbed --resume`) and leaves finished o
 the study (about 7 x 4,000 s of one core) can be spread over several sittings; stop it
 with SIGTERM/Ctrl-C (the runs write a checkpoint and exit).
 
+The work folder is a build folder and does not outlive a machine, so each run's figures
+are also kept in the repository, benchmarks/results/liquid_loading_sweep[_cap_X]/
+delta_<d>e-2.json: its table row, FI(t) thinned to at most 2,000 points and 3,000 of its
+field-output samples (4 significant digits). The table and plots are drawn from the
+work folder where a run is there and from the stored file otherwise, so a sweep finished
+on another machine (or with another build, --binary) keeps all its rows.
+
 usage: python3 benchmarks/liquid_loading_sweep.py [--end-time 5] [--start-up 1]
            [--loadings 0 0.027 ...] [--jobs 2] [--summarize-only]
 (build first: bash scripts/build.sh). --jobs runs that many cases at once, one core each.
 """
 import argparse
 import concurrent.futures
+import json
 import math
 import os
 
@@ -48,6 +56,7 @@ if args.maximum_wet_viscosity is not None:
     cap = f"  set maximum wet viscosity = {args.maximum_wet_viscosity:g}\n"
     suffix = f"_cap_{args.maximum_wet_viscosity:g}"
 os.makedirs(args.work, exist_ok=True)
+results = os.path.join(root, "benchmarks", "results", "liquid_loading_sweep" + suffix)
 base = read_case("wet_column_2d")
 
 
@@ -92,17 +101,56 @@ def bubbles(folder, start_up):
     return count, diameter
 
 
+def rounded(values, digits=4):
+    return [float(format(float(v), f".{digits - 1}e")) for v in values]
+
+
+def store(loading, summary, fi_series, cell_data):
+    """Keep the run's row, FI(t) (at most 2,000 points) and 3,000 samples in RESULTS."""
+    import numpy
+    t, fi = fi_series
+    every = max(1, len(t) // 2000)
+    pick = numpy.random.default_rng(0).permutation(len(cell_data.get("alpha_s", [])))[:3000]
+    record = {"row": summary, "binary": os.path.abspath(args.binary or os.path.join(root, "build", "wetbed")),
+              "fi": {"time": rounded(t[::every], 6), "value": rounded(fi[::every])},
+              "samples": {key: rounded(values[pick]) for key, values in cell_data.items()}}
+    os.makedirs(results, exist_ok=True)
+    with open(os.path.join(results, name(loading) + ".json.part"), "w") as f:
+        json.dump(record, f, separators=(",", ":"), allow_nan=True)
+    os.replace(os.path.join(results, name(loading) + ".json.part"), os.path.join(results, name(loading) + ".json"))
+
+
+def restore(loading):
+    """(row, FI series or None, samples dict) from RESULTS, or None."""
+    import numpy
+    path = os.path.join(results, name(loading) + ".json")
+    if not os.path.exists(path):
+        return None
+    record = json.load(open(path))
+    fi = record.get("fi")
+    return (record["row"], (fi["time"], fi["value"]) if fi else None,
+            {key: numpy.asarray(values) for key, values in (record.get("samples") or {}).items()})
+
+
 rows, series, samples = [], {}, {}
 for loading in sorted(args.loadings):
     prm, folder, log = case(loading)
-    if not os.path.exists(os.path.join(folder, "monitors.csv")):
-        continue
-    wall_file = os.path.join(args.work, name(loading) + ".wall")
-    wall = float(open(wall_file).read()) if os.path.exists(wall_file) else None
-    summary, series[loading] = summarize_run(folder, log, args.start_up, wall)
-    samples[loading] = cell_samples(folder, args.start_up)
-    summary["bubbles"], summary["diameter"] = bubbles(folder, args.start_up)
-    summary["split"] = stress_split(samples[loading])
+    if os.path.exists(os.path.join(folder, "monitors.csv")):
+        wall_file = os.path.join(args.work, name(loading) + ".wall")
+        wall = float(open(wall_file).read()) if os.path.exists(wall_file) else None
+        summary, series[loading] = summarize_run(folder, log, args.start_up, wall)
+        samples[loading] = cell_samples(folder, args.start_up)
+        summary["bubbles"], summary["diameter"] = bubbles(folder, args.start_up)
+        summary["split"] = stress_split(samples[loading])
+        store(loading, summary, series[loading], samples[loading])
+    else:
+        stored = restore(loading)
+        if stored is None:
+            continue
+        summary, fi_series, samples[loading] = stored
+        if fi_series:
+            series[loading] = fi_series
+        print(f"delta = {loading:g}e-2: from {os.path.relpath(results, root)} (no run in {args.work})")
     rows.append(dict(summary, loading=loading))
 
 
