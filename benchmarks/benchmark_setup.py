@@ -145,3 +145,32 @@ def replace_doc_section(root, key, title, lines):
         text += f"\n## {title}\n\n" + section + "\n"
     open(doc, "w").write(text)
     print("updated doc/benchmarks.md")
+
+
+def timer_seconds(text, name):
+    """Wall seconds of the TimerOutput section NAME in a screen log (nan if absent)."""
+    m = re.search(r"\| " + re.escape(name) + r"\s*\|\s*\d+\s*\|\s*([\d.e+-]+)s", text)
+    return float(m.group(1)) if m else float("nan")
+
+
+def solver_run(root, work, name, base, end_time, sections):
+    """Runs WORK/NAME (BASE + SECTIONS, serial, no field output, no checkpoint, no bubble
+    analysis) and returns its solver figures: cells, steps, FGMRES iterations per solve
+    (repeated solves after an AMG rebuild counted), Krylov, preconditioner-setup and
+    total wall seconds, setups, solves and iterations."""
+    import subprocess
+    sections += ("\nsubsection checkpoint\n set at end = false\nend\n"
+                 "subsection bubble analysis\n set enabled = false\nend\n")
+    prm, folder, log = write_case(work, name, base, end_time, sections, field_interval=1000)
+    with open(log, "w") as out:
+        subprocess.run([os.path.join(root, "build", "wetbed"), prm], stdout=out, stderr=subprocess.STDOUT, check=True)
+    rows = list(csv.DictReader(open(os.path.join(folder, "monitors.csv"))))[1:]
+    text = open(log).read()
+    solves = int(re.search(r"\| Krylov solve\s*\|\s*(\d+)", text).group(1))
+    setups = re.search(r"\| preconditioner setup\s*\|\s*(\d+)", text)
+    iterations = sum(float(r["krylov_iterations"]) for r in rows)
+    return {"cells": int(rows[-1]["active_cells"]), "steps": len(rows), "solves": solves,
+            "setups": int(setups.group(1)) if setups else 0, "iterations": iterations,
+            "its": iterations / solves, "krylov": timer_seconds(text, "Krylov solve"),
+            "setup": timer_seconds(text, "preconditioner setup"),
+            "total": float(re.search(r"Total wallclock time elapsed\s*\|\s*([\d.e+-]+)s", text).group(1))}

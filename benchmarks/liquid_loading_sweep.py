@@ -231,4 +231,7 @@ if stress_figure:
 
 replace_doc_section(root, "liquid_loading_sweep" + suffix, "Liquid-loading sweep" + (f", μ_wet capped at {args.maximum_wet_viscosity:g} Pa·s" if cap else ""),
                     lines + ["", f"![FI(t) of the sweep](liquid_loading_fi{suffix}.png)"]
-                    + (["", f"![stress split, dissipation and Θ against α_s](liquid_loading_stress{suffix}.png)"] if stress_figure else []))
+                    + (["", f"![stress split, dissipation and Θ against α_s](liquid_loading_stress{suffix}.png)"] if stress_figure
+                       else ["", f"![stress split, dissipation and Θ against α_s, drawn by an earlier sitting whose field "
+                             f"outputs are not kept](liquid_loading_stress{suffix}.png)"]
+                       if os.path.exists(os.path.join(root, "doc", f"liquid_loading_stress{suffix}.png")) else []))

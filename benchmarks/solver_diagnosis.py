@@ -12,12 +12,10 @@ usage: python3 benchmarks/solver_diagnosis.py [--end-time 0.01] [--levels 0 1 2]
 (build first: bash scripts/build.sh)
 """
 import argparse
-import csv
 import os
 import re
-import subprocess
 
-from benchmark_setup import read_case, replace_doc_section, repository_root, write_case
+from benchmark_setup import read_case, replace_doc_section, repository_root, solver_run
 
 root = repository_root()
 parser = argparse.ArgumentParser()
@@ -36,31 +34,13 @@ configurations = [
 ]
 
 
-def seconds(text, name):
-    m = re.search(r"\| " + re.escape(name) + r"\s*\|\s*\d+\s*\|\s*([\d.e+-]+)s", text)
-    return float(m.group(1)) if m else float("nan")
-
-
 results = {}
 for label, settings in configurations:
     for level in args.levels:
         name = re.sub(r"[^a-z0-9]+", "_", label.lower()) + f"_L{level}"
         sections = (f"\nsubsection mesh\n set initial refinement = {level}\nend\n"
-                    f"subsection linear solver\n {settings}\nend\n"
-                    "subsection checkpoint\n set at end = false\nend\n"
-                    "subsection bubble analysis\n set enabled = false\nend\n")
-        prm, folder, log = write_case(work, name, base, args.end_time, sections, field_interval=1000)
-        with open(log, "w") as out:
-            subprocess.run([os.path.join(root, "build", "wetbed"), prm], stdout=out, stderr=subprocess.STDOUT, check=True)
-        rows = list(csv.DictReader(open(os.path.join(folder, "monitors.csv"))))[1:]
-        text = open(log).read()
-        solves = int(re.search(r"\| Krylov solve\s*\|\s*(\d+)", text).group(1))
-        results[(label, level)] = {
-            "cells": int(rows[-1]["active_cells"]), "steps": len(rows),
-            "its": sum(float(r["krylov_iterations"]) for r in rows) / solves,
-            "krylov": seconds(text, "Krylov solve"), "setup": seconds(text, "preconditioner setup"),
-            "total": float(re.search(r"Total wallclock time elapsed\s*\|\s*([\d.e+-]+)s", text).group(1)),
-        }
+                    f"subsection linear solver\n {settings}\nend\n")
+        results[(label, level)] = solver_run(root, work, name, base, args.end_time, sections)
         r = results[(label, level)]
         print(f"{label:30s} level {level}: {r['cells']:6d} cells, {r['its']:6.1f} its/solve, "
               f"Krylov {r['krylov']:7.2f} s, setup {r['setup']:6.2f} s, total {r['total']:7.2f} s")

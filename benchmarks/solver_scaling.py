@@ -1,0 +1,61 @@
+#!/usr/bin/env python3
+"""Solver scaling of the coupled (u_g, u_s, p') solve with the default solver settings:
+FGMRES iterations per solve, preconditioner setup time per build and Krylov time per
+iteration against the mesh size h (three uniform refinements), the time step (fixed
+dt, level 1) and the drag magnitude (particle diameter d: the Stokes drag goes as
+1/d^2; level 1). The 2D bubbling bed (prm/bubbling_bed_2d.prm) over the first END_TIME
+seconds of its start-up, serial. Prints the growth of the iterations over two
+refinements (target: at most 30%) and writes the 'solver_scaling' section of
+doc/benchmarks.md.
+
+usage: python3 benchmarks/solver_scaling.py [--end-time 0.01]
+(build first: bash scripts/build.sh)
+"""
+import argparse
+import os
+
+from benchmark_setup import read_case, replace_doc_section, repository_root, solver_run
+
+root = repository_root()
+parser = argparse.ArgumentParser()
+parser.add_argument("--end-time", type=float, default=0.01)
+args = parser.parse_args()
+work = os.path.join(root, "build", "benchmarks", "solver_scaling")
+os.makedirs(work, exist_ok=True)
+base = read_case("bubbling_bed_2d")
+
+
+def mesh(level):
+    return f"\nsubsection mesh\n set initial refinement = {level}\nend\n"
+
+
+ladders = {
+    "h": [(f"level {level}", f"h_{level}", mesh(level)) for level in (0, 1, 2)],
+    "Δt": [(f"Δt = {dt:g} s", f"dt_{dt:g}", mesh(1) + "subsection time stepping\n set adaptive = false\n"
+            f" set initial time step = {dt:g}\n set maximum time step = {dt:g}\nend\n")
+           for dt in (1e-4, 2.5e-4, 5e-4, 1e-3)],
+    "drag": [(f"d = {d * 1e6:g} µm", f"d_{d * 1e6:g}", mesh(1) + f"subsection physical properties\n"
+              f" set particle diameter = {d:g}\nend\n") for d in (700e-6, 350e-6, 175e-6)],
+}
+lines = [f"Command: `python3 benchmarks/solver_scaling.py --end-time {args.end_time:g}` (prm/bubbling_bed_2d.prm, "
+         f"first {args.end_time:g} s of the start-up, serial, default solver settings; the Δt and drag ladders at "
+         "level 1 (600 cells), the drag varied through the particle diameter, Stokes drag ∝ 1/d²).", "",
+         "| ladder | run | cells | steps | FGMRES its/solve | setups | setup s per build | Krylov ms per iteration | total s |",
+         "|---|---|---|---|---|---|---|---|---|"]
+growth = {}
+for ladder, runs in ladders.items():
+    its = []
+    for label, name, sections in runs:
+        r = solver_run(root, work, name, base, args.end_time, sections)
+        its.append(r["its"])
+        row = (f"| {ladder} | {label} | {r['cells']} | {r['steps']} | {r['its']:.1f} | {r['setups']} | "
+               f"{r['setup'] / max(r['setups'], 1):.3f} | {1e3 * r['krylov'] / max(r['iterations'], 1):.2f} | {r['total']:.1f} |")
+        lines.append(row)
+        print(row, flush=True)
+    growth[ladder] = (its[0], its[-1], 100 * (its[-1] / its[0] - 1))
+lines += ["", f"Growth of FGMRES iterations per solve over two refinements (level 0 → 2): "
+          f"{growth['h'][0]:.1f} → {growth['h'][1]:.1f}, {growth['h'][2]:+.0f}% (target ≤ 30%); "
+          f"over the Δt ladder (1e-4 → 1e-3 s): {growth['Δt'][2]:+.0f}%; over the drag ladder "
+          f"(d = 700 → 175 µm, β × 16): {growth['drag'][2]:+.0f}%."]
+print(lines[-1])
+replace_doc_section(root, "solver_scaling", "Solver scaling: iterations against h, Δt and drag (2D bed, start-up)", lines)
