@@ -315,8 +315,10 @@ private:
     const closures::GasParticleProperties gp{
         pp.gas_density, pp.gas_viscosity, pp.particle_diameter};
     const double beta = drag->coefficient (alpha_inertia, (s.ug - s.us).norm (), gp);
-    // alpha_s is steady: d(alpha_k u_k)/dt = alpha_k du_k/dt in both forms
-    Tensor<1, dim> r = inertia_k * rho_k * (velocity (x, gas, true) + g * u) -
+    // alpha_s is steady: d(alpha_k u_k)/dt = alpha_k du_k/dt in both forms (the
+    // rotation is steady and ignores the scale)
+    const Tensor<1, dim> dudt = transient ? velocity (x, gas, true) : Tensor<1, dim> ();
+    Tensor<1, dim>       r    = inertia_k * rho_k * (dudt + g * u) -
                        (gas ? s.div_tau_g : s.div_tau_s) + alpha_k * s.grad_p;
     // the conservative form's rho_k div(alpha_k u_k) u_k (steady: the time parts vanish)
     if (parameters.conservative_momentum)
