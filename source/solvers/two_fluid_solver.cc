@@ -31,11 +31,8 @@ TwoFluidSolver<dim>::TwoFluidSolver (const Parameters &parameters, MPI_Comm comm
     : parameters (parameters), communicator (communicator),
       pcout (std::cout, Utilities::MPI::this_mpi_process (communicator) == 0),
       timer (pcout, TimerOutput::never, TimerOutput::wall_times),
-      // only the 2:1 balance at vertices: deal.II's other smoothing rules act on the
-      // locally owned cells and made the adapted mesh depend on the partition
-      triangulation (communicator,
-                     Triangulation<dim>::limit_level_difference_at_vertices),
-      mapping (parameters.mesh.mapping_degree),
+      // the 2:1 balance by p4est alone: the adapted mesh does not depend on the partition
+      triangulation (communicator), mapping (parameters.mesh.mapping_degree),
       flow_fe (FE_Q<dim> (2), 2 * dim, FE_Q<dim> (1), 1),
       flow_dof_handler (triangulation), alpha_fe (1), alpha_dof_handler (triangulation),
       drag (closures::create_drag_model (parameters.drag_model)),

@@ -8,6 +8,7 @@
 #include <wetbed/core/parameters.h>
 #include <wetbed/core/time_integration.h>
 #include <wetbed/mesh/mesh_input.h>
+#include <wetbed/mesh/partition_independent_triangulation.h>
 #include <wetbed/postprocess/bubble_analysis.h>
 #include <wetbed/postprocess/monitors.h>
 #include <wetbed/solvers/block_preconditioner.h>
@@ -222,9 +223,9 @@ private:
   dealii::ConditionalOStream  pcout;
   mutable dealii::TimerOutput timer;
 
-  dealii::parallel::distributed::Triangulation<dim> triangulation;
-  BoundaryIds                                       boundary_ids;
-  dealii::MappingQ<dim>                             mapping;
+  PartitionIndependentTriangulation<dim> triangulation;
+  BoundaryIds                            boundary_ids;
+  dealii::MappingQ<dim>                  mapping;
 
   dealii::FESystem<dim>   flow_fe;
   dealii::DoFHandler<dim> flow_dof_handler;
