@@ -256,7 +256,11 @@ fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4))
 for i, name in enumerate(order):
     t, fi, _ = zip(*records[name]["series"])
     left.plot(t, fi, lw=0.8, color=f"C{i}", label=f"{name} ({records[name]['cells']} cells)")
-    right.plot(records[name]["per_second"], max(100 * records[name]["fi_error"], 1e-3), "o", color=f"C{i}", label=name)
+    right.plot(records[name]["per_second"], max(100 * records[name]["fi_error"], 1e-3), "o", color=f"C{i}",
+               label=f"{name}: |FI - 1|")
+    if records[name]["surface_error"] > 0:
+        right.plot(records[name]["per_second"], 100 * records[name]["surface_error"], "s", mfc="none", color=f"C{i}",
+                   label=f"{name}: bed surface vs finest")
 left.axhline(1, color="k", lw=0.5)
 left.set_xlabel("t (s)")
 left.set_ylabel("FI")
@@ -265,7 +269,7 @@ left.set_title("fluidization index")
 right.set_xscale("log")
 right.set_yscale("log")
 right.set_xlabel("wall s per simulated s (one core)")
-right.set_ylabel("|mean FI - 1| (%)")
+right.set_ylabel("error (%)")
 right.legend(fontsize=7)
 right.set_title("error against cost")
 fig.tight_layout()
