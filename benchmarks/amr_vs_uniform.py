@@ -6,8 +6,11 @@ time-averaged FI and bed height after the start-up, and their errors against the
 uniform run. Regenerates the 'amr_vs_uniform' section of doc/benchmarks.md and
 doc/amr_vs_uniform.png.
 
-usage: python3 benchmarks/amr_vs_uniform.py [--end-time 5] [--start-up 1] [--level 0]
-       [--jobs 2] [--summarize-only]      (build first: bash scripts/build.sh)
+With --case another prm/CASE.prm (its own work folder, doc section and plot); --runs runs
+only some of the four (the others are tabulated from their folders if present).
+
+usage: python3 benchmarks/amr_vs_uniform.py [--case bubbling_bed_2d] [--end-time 5]
+       [--start-up 1] [--level 0] [--runs uniform_<L> amr ...] [--jobs 2] [--summarize-only]      (build first: bash scripts/build.sh)
 """
 import argparse
 import csv
@@ -25,13 +28,17 @@ parser.add_argument("--start-up", type=float, default=1.0)
 parser.add_argument("--level", type=int, default=0, help="L: the coarsest uniform level")
 parser.add_argument("--jobs", type=int, default=2, help="runs at the same time (one core each)")
 parser.add_argument("--summarize-only", action="store_true", help="tabulate the runs already in the work folder")
+parser.add_argument("--case", default="bubbling_bed_2d", help="prm/CASE.prm")
+parser.add_argument("--runs", nargs="+", default=None, help="run only these (uniform_<level>, amr); the others "
+                    "are tabulated if their folders are in the work folder")
 parser.add_argument("--until", type=float, default=None,
                     help="average over start-up < t <= UNTIL only (compare runs of which one stopped early)")
 args = parser.parse_args()
 
-work = os.path.join(root, "build", "benchmarks", "amr_vs_uniform")
+suffix = "" if args.case == "bubbling_bed_2d" else "_" + args.case  # of the work folder, doc section and plot
+work = os.path.join(root, "build", "benchmarks", "amr_vs_uniform" + suffix)
 os.makedirs(work, exist_ok=True)
-base = read_case("bubbling_bed_2d")
+base = read_case(args.case)
 L = args.level
 cases = {f"uniform_{level}": f"\nsubsection mesh\n  set initial refinement = {level}\nend\n" for level in (L, L + 1, L + 2)}
 cases["amr"] = (f"\nsubsection mesh\n  set initial refinement = {L}\nend\n"
@@ -48,7 +55,7 @@ def run(name):
 
 if not args.summarize_only:
     with ThreadPoolExecutor(args.jobs) as pool:  # the finest run first: it takes longest
-        for name in pool.map(run, [f"uniform_{L + 2}", "amr", f"uniform_{L + 1}", f"uniform_{L}"]):
+        for name in pool.map(run, args.runs or [f"uniform_{L + 2}", "amr", f"uniform_{L + 1}", f"uniform_{L}"]):
             print("finished", name)
 
 results = {}
@@ -72,33 +79,41 @@ for name in cases:
         summary["wall"], summary["steps"] = wall, len(rows) - 1
     summary["cells"] = sum(int(r["active_cells"]) * dt[i] for i, r in enumerate(rows) if i in after) / weight
     summary["bed_height"] = sum(float(rows[i]["bed_height"]) * dt[i] for i in after) / weight
+    # mean equivalent bubble diameter over the bubble analyses after the start-up (those
+    # that found bubbles), weighted by the number of bubbles
+    bubbles = os.path.join(folder, "bubble_summary.csv")
+    found = [r for r in (csv.DictReader(open(bubbles)) if os.path.isfile(bubbles) else [])
+             if args.start_up < float(r["time"]) <= until + 1e-12 and int(r["bubbles"]) > 0]
+    summary["bubble_diameter"] = (sum(int(r["bubbles"]) * float(r["mean_equivalent_diameter"]) for r in found) /
+                                  sum(int(r["bubbles"]) for r in found)) if found else float("nan")
     log_text = open(log).read()
     summary["flow_dofs_first"] = log_text.split("flow DoFs ")[1].split(" ")[0] if "flow DoFs " in log_text else "?"
     results[name] = summary
 json.dump(results, open(os.path.join(work, "results.json"), "w"), indent=1)
 
 finest = results.get(f"uniform_{L + 2}")
-lines = [f"Command: `python3 benchmarks/amr_vs_uniform.py --end-time {args.end_time} --start-up {args.start_up} "
+lines = [f"Command: `python3 benchmarks/amr_vs_uniform.py --case {args.case} --end-time {args.end_time} --start-up {args.start_up} "
          f"--level {L} --jobs {args.jobs}` (serial runs, {args.jobs} at a time on this 2-core machine). "
          f"Means over {args.start_up} s < t ≤ {args.until or args.end_time} s; errors against the finest uniform run "
          f"(level {L + 2}); a run that had not reached the end time is costed from its file times.", "",
          "| run | cells (mean) | steps (rejected) | wall s | s per simulated s | FI mean | FI error | bed height (m) | "
-         "height error | α_s range | mass drift |", "|" + "---|" * 11]
+         "height error | bubble diameter (mm) | diameter error | α_s range | mass drift |", "|" + "---|" * 13]
 for name, s in results.items():
     fi_error = abs(s["mean_fi"] / finest["mean_fi"] - 1) if finest else float("nan")
     h_error = abs(s["bed_height"] / finest["bed_height"] - 1) if finest else float("nan")
-    s["fi_error"], s["height_error"] = fi_error, h_error
+    d_error = abs(s["bubble_diameter"] / finest["bubble_diameter"] - 1) if finest else float("nan")
+    s["fi_error"], s["height_error"], s["diameter_error"] = fi_error, h_error, d_error
     label = name if s["finished"] else f"{name} (to {s['end']:.3f} s)"
     lines.append(f"| {label} | {s['cells']:.0f} | {s['steps']} ({s['rejected']}) | {s['wall']:.0f} | {s['per_second']:.0f} | "
                  f"{s['mean_fi']:.4f} | {100 * fi_error:.2f}% | {s['bed_height']:.4f} | {100 * h_error:.2f}% | "
-                 f"[{s['alpha_min']:.1e}, {s['alpha_max']:.4f}] | {s['drift']:.1e} |")
+                 f"{1000 * s['bubble_diameter']:.1f} | {100 * d_error:.1f}% | [{s['alpha_min']:.1e}, {s['alpha_max']:.4f}] | {s['drift']:.1e} |")
 if finest and "amr" in results:
     speed_up = finest["per_second"] / results["amr"]["per_second"]
     lines += ["", f"AMR (max level {L + 2}) vs uniform level {L + 2}: {speed_up:.2f}× less wall time per simulated "
                   f"second, FI within {100 * results['amr']['fi_error']:.2f}%, bed height within "
-                  f"{100 * results['amr']['height_error']:.2f}% (goal: within 5% for at least 3× less wall time). "
-                  "Mean bubble diameter: not yet measured (bubble detection is issue 6)."]
-lines += ["", "![error vs cost](amr_vs_uniform.png)"]
+                  f"{100 * results['amr']['height_error']:.2f}%, mean bubble diameter within "
+                  f"{100 * results['amr']['diameter_error']:.1f}% (goal: within 5% for at least 3× less wall time)."]
+lines += ["", f"![error vs cost](amr_vs_uniform{suffix}.png)"]
 for name, s in results.items():
     print(name, {k: s[k] for k in ("cells", "per_second", "mean_fi", "fi_error", "bed_height", "height_error")})
 
@@ -117,7 +132,7 @@ ax.set_yscale("log")
 ax.set_xlabel("wall s per simulated s")
 ax.set_ylabel(f"error vs uniform level {L + 2} (%)")
 ax.legend(fontsize=7)
-ax.set_title("2D bubbling bed: AMR vs uniform meshes")
+ax.set_title(f"{args.case}: AMR vs uniform meshes")
 fig.tight_layout()
-fig.savefig(os.path.join(root, "doc", "amr_vs_uniform.png"), dpi=110)
-replace_doc_section(root, "amr_vs_uniform", "AMR against uniform meshes (2D bubbling bed)", lines)
+fig.savefig(os.path.join(root, "doc", f"amr_vs_uniform{suffix}.png"), dpi=110)
+replace_doc_section(root, "amr_vs_uniform" + suffix, f"AMR against uniform meshes (prm/{args.case}.prm)", lines)
