@@ -18,13 +18,12 @@ usage: python3 benchmarks/bed_work_precision.py [--end-time 1.5] [--start-up 0.5
        [--runs NAME ...] [--jobs 2] [--summarize-only]     (build first)
 """
 import argparse
-import csv
 import glob
 import json
 import os
 from concurrent.futures import ThreadPoolExecutor
 
-from benchmark_setup import read_case, replace_doc_section, repository_root, run_resumable, summarize_run, write_case
+from benchmark_setup import replace_doc_section, repository_root, run_case
 
 root = repository_root()
 VARIANTS = {  # name: (level, description, prm sections)
@@ -58,14 +57,8 @@ def time_mean(rows, column):
 def run(name):
     level, description, sections = VARIANTS[name]
     sections = f"\nsubsection mesh\n  set initial refinement = {level}\nend\n" + sections
-    prm, folder, log = write_case(work, name, read_case("openfoam_fluidisedBed"), args.end_time, sections,
-                                  field_interval=0, progress_interval=500)
-    code, wall = run_resumable([os.path.join(root, "build", "wetbed"), prm], folder, log,
-                               os.path.join(work, name + ".wall"))
-    if code != 0:
-        raise SystemExit(f"{name} failed (exit {code}): see {log}")
-    summary, _ = summarize_run(folder, log, args.start_up, wall)
-    rows = list(csv.DictReader(open(os.path.join(folder, "monitors.csv"))))[1:]
+    summary, rows, wall, _ = run_case(root, work, name, "openfoam_fluidisedBed", args.end_time, sections, args.start_up)
+    rows = rows[1:]
     record = {"level": level, "variant": description, "cells": int(rows[-1]["active_cells"]),
               "steps": summary["steps"], "rejected": summary["rejected"], "wall": wall, "end": summary["end"],
               "per_second": wall / summary["end"], "mean_fi": time_mean(rows, "fluidization_index"),

@@ -174,3 +174,17 @@ def solver_run(root, work, name, base, end_time, sections):
             "its": iterations / solves, "krylov": timer_seconds(text, "Krylov solve"),
             "setup": timer_seconds(text, "preconditioner setup"),
             "total": float(re.search(r"Total wallclock time elapsed\s*\|\s*([\d.e+-]+)s", text).group(1))}
+
+
+def run_case(root, work, name, case, end_time, sections, start_up):
+    """Runs prm/CASE.prm + SECTIONS as WORK/NAME (serial, resumable, no field output) to
+    END_TIME; returns (summary of summarize_run, all monitor rows, total wall s, log path).
+    Stops the script with the log's name if the run fails."""
+    prm, folder, log = write_case(work, name, read_case(case), end_time, sections,
+                                  field_interval=0, progress_interval=500)
+    code, wall = run_resumable([os.path.join(root, "build", "wetbed"), prm], folder, log,
+                               os.path.join(work, name + ".wall"))
+    if code != 0:
+        raise SystemExit(f"{name} failed (exit {code}): see {log}")
+    summary, _ = summarize_run(folder, log, start_up, wall)
+    return summary, list(csv.DictReader(open(os.path.join(folder, "monitors.csv")))), wall, log

@@ -26,7 +26,6 @@ usage: python3 benchmarks/openfoam_comparison.py [--end-time 2] [--start-up 0.5]
        (build first: bash scripts/build.sh)
 """
 import argparse
-import csv
 import glob
 import json
 import os
@@ -36,7 +35,7 @@ import subprocess
 import time
 from concurrent.futures import ThreadPoolExecutor
 
-from benchmark_setup import read_case, replace_doc_section, repository_root, run_resumable, summarize_run, timer_seconds, write_case
+from benchmark_setup import replace_doc_section, repository_root, run_case, timer_seconds
 
 root = repository_root()
 parser = argparse.ArgumentParser()
@@ -161,14 +160,8 @@ def run_wetbed(level):
     name = f"wetbed_{level}"
     sections = (f"\nsubsection mesh\n  set initial refinement = {level}\nend\n"
                 "subsection checkpoint\n  set interval = 400\nend\n")
-    prm, folder, log = write_case(work, name, read_case("openfoam_fluidisedBed"), args.end_time, sections,
-                                  field_interval=0, progress_interval=500)
-    code, wall = run_resumable([os.path.join(root, "build", "wetbed"), prm], folder, log,
-                               os.path.join(work, name + ".wall"))
-    if code != 0:
-        raise SystemExit(f"wetbed level {level} failed (exit {code}): see {log}")
-    summary, _ = summarize_run(folder, log, args.start_up, wall)
-    rows = list(csv.DictReader(open(os.path.join(folder, "monitors.csv"))))
+    summary, rows, wall, log = run_case(root, work, name, "openfoam_fluidisedBed", args.end_time, sections,
+                                        args.start_up)
     text = open(log).read()
     series = [(float(r["time"]), float(r["fluidization_index"]), float(r["bed_surface_height"])) for r in rows[1:]]
     store(name, {"code": "wetbed", "cells": int(rows[-1]["active_cells"]), "steps": summary["steps"],
