@@ -19,7 +19,7 @@ import os
 import subprocess
 from concurrent.futures import ThreadPoolExecutor
 
-from benchmark_setup import read_case, replace_doc_section, repository_root, summarize_run, write_case
+from benchmark_setup import bubble_diameter, read_case, replace_doc_section, repository_root, summarize_run, write_case
 
 root = repository_root()
 parser = argparse.ArgumentParser()
@@ -79,13 +79,7 @@ for name in cases:
         summary["wall"], summary["steps"] = wall, len(rows) - 1
     summary["cells"] = sum(int(r["active_cells"]) * dt[i] for i, r in enumerate(rows) if i in after) / weight
     summary["bed_height"] = sum(float(rows[i]["bed_height"]) * dt[i] for i in after) / weight
-    # mean equivalent bubble diameter over the bubble analyses after the start-up (those
-    # that found bubbles), weighted by the number of bubbles
-    bubbles = os.path.join(folder, "bubble_summary.csv")
-    found = [r for r in (csv.DictReader(open(bubbles)) if os.path.isfile(bubbles) else [])
-             if args.start_up < float(r["time"]) <= until + 1e-12 and int(r["bubbles"]) > 0]
-    summary["bubble_diameter"] = (sum(int(r["bubbles"]) * float(r["mean_equivalent_diameter"]) for r in found) /
-                                  sum(int(r["bubbles"]) for r in found)) if found else float("nan")
+    summary["bubble_diameter"] = bubble_diameter(folder, args.start_up, until)
     log_text = open(log).read()
     summary["flow_dofs_first"] = log_text.split("flow DoFs ")[1].split(" ")[0] if "flow DoFs " in log_text else "?"
     results[name] = summary

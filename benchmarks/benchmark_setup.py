@@ -188,3 +188,15 @@ def run_case(root, work, name, case, end_time, sections, start_up):
         raise SystemExit(f"{name} failed (exit {code}): see {log}")
     summary, _ = summarize_run(folder, log, start_up, wall)
     return summary, list(csv.DictReader(open(os.path.join(folder, "monitors.csv")))), wall, log
+
+
+def bubble_diameter(folder, start_up, until=float("inf")):
+    """Mean equivalent bubble diameter (m) over the bubble analyses of FOLDER's
+    bubble_summary.csv with start_up < t <= until that found bubbles, weighted by the
+    number of bubbles; nan if none."""
+    path = os.path.join(folder, "bubble_summary.csv")
+    found = [r for r in (csv.DictReader(open(path)) if os.path.isfile(path) else [])
+             if start_up < float(r["time"]) <= until + 1e-12 and int(r["bubbles"]) > 0]
+    if not found:
+        return float("nan")
+    return sum(int(r["bubbles"]) * float(r["mean_equivalent_diameter"]) for r in found) / sum(int(r["bubbles"]) for r in found)

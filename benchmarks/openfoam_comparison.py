@@ -35,7 +35,7 @@ import subprocess
 import time
 from concurrent.futures import ThreadPoolExecutor
 
-from benchmark_setup import replace_doc_section, repository_root, run_case, timer_seconds
+from benchmark_setup import bubble_diameter, replace_doc_section, repository_root, run_case, timer_seconds
 
 root = repository_root()
 parser = argparse.ArgumentParser()
@@ -166,7 +166,9 @@ def run_wetbed(level):
     series = [(float(r["time"]), float(r["fluidization_index"]), float(r["bed_surface_height"])) for r in rows[1:]]
     store(name, {"code": "wetbed", "cells": int(rows[-1]["active_cells"]), "steps": summary["steps"],
                  "rejected": summary["rejected"], "wall": wall, "end": summary["end"],
-                 "krylov_per_step": summary["krylov"], "alpha_range": [summary["alpha_min"], summary["alpha_max"]],
+                 "krylov_per_step": summary["krylov"], "frequency": summary["frequency"],
+                 "bubble_diameter": bubble_diameter(os.path.dirname(log) + "/" + name, args.start_up),
+                 "alpha_range": [summary["alpha_min"], summary["alpha_max"]],
                  "timers": {k: timer_seconds(text, k) for k in ("Krylov solve", "flow assembly", "preconditioner setup",
                                                               "alpha transport", "solids pressure correction",
                                                               "granular temperature", "monitors")}}, series)
