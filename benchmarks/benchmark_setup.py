@@ -200,3 +200,18 @@ def bubble_diameter(folder, start_up, until=float("inf")):
     if not found:
         return float("nan")
     return sum(int(r["bubbles"]) * float(r["mean_equivalent_diameter"]) for r in found) / sum(int(r["bubbles"]) for r in found)
+
+
+def bubble_diameter_standard_error(folder, start_up, until, batch=0.1):
+    """Standard error (m) of the mean bubble diameter of bubble_diameter(), by batch means:
+    the window start_up < t <= until cut into batches of BATCH seconds (longer than the
+    correlation time of the bubbling, ~1/(2 Hz) per bubble), the error being the standard
+    deviation of the batch means over the square root of their number; nan with fewer
+    than 3 batches that found bubbles."""
+    count = int(round((until - start_up) / batch))
+    means = [bubble_diameter(folder, start_up + k * batch, start_up + (k + 1) * batch) for k in range(count)]
+    means = [m for m in means if m == m]
+    if len(means) < 3:
+        return float("nan")
+    mean = sum(means) / len(means)
+    return (sum((m - mean) ** 2 for m in means) / (len(means) - 1) / len(means)) ** 0.5
