@@ -38,6 +38,7 @@ def run(case, overrides="", ranks=1, folder=None, resume=False, expected_exit=0)
     open(prm, "w").write(text)
     command = [wetbed, prm] if ranks == 1 else ["mpirun", "--oversubscribe", "-np", str(ranks), wetbed, prm]
     p = subprocess.run(command + (["--resume"] if resume else []), capture_output=True, text=True, env=env)
+    run.stdout = p.stdout
     if p.returncode != expected_exit:
         print(p.stdout[-2000:], p.stderr[-2000:])
         expect(False, f"{case} ran (exit {p.returncode})")
@@ -379,13 +380,20 @@ elif check == "amr":
     expect(grew >= 10 and shrank >= 2, f"the mesh followed the bed: {cells[0]} -> {cells[-1]} cells, "
                                        f"{grew} adaptations with more cells, {shrank} with fewer")
     expect(max(cells) < 600 * 4 ** 2, f"AMR keeps fewer cells ({max(cells)}) than the uniform level-3 mesh (9600)")
-    two = run("bubbling_bed_2d", overrides, 2, os.path.join(work, "amr_2"))
+    # 2 ranks partitioned by cost (a wall face costs 3 cells): another partition, the
+    # same mesh and monitors
+    weighted = overrides + "subsection mesh\n set wall face weight = 3\nend\n"
+    two = run("bubbling_bed_2d", weighted, 2, os.path.join(work, "amr_2"))
+    partition = re.findall(r"Partition: owned cells per rank (\d+)-(\d+), wall faces per rank (\d+)-(\d+) "
+                           r"\(mesh/wall face weight 3\)", run.stdout)
+    expect(partition and partition[0][0] != partition[0][1],
+           f"the cells are balanced by cost, not by count (cells and wall faces per rank: {partition[:1]})")
     expect([int(r["active_cells"]) for r in two] == cells, "2 ranks adapt the mesh exactly as 1 rank")
     same_monitors(one, two, "AMR on 2 ranks vs 1 rank", 1e-4)
     folder = os.path.join(work, "amr_resumed")
     shutil.rmtree(folder, ignore_errors=True)
     shutil.copytree(os.path.join(work, "amr_1"), folder)
-    rows = run("bubbling_bed_2d", overrides, 2, folder, resume=True)
+    rows = run("bubbling_bed_2d", weighted, 2, folder, resume=True)  # loaded, then repartitioned by cost
     same_monitors(one, rows, "AMR run resumed at step 20 on 2 ranks", 1e-4)
 elif check == "failure":
     # issue 7: a step that cannot be saved by halving dt stops the run cleanly: status 3,

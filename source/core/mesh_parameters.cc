@@ -50,6 +50,15 @@ void MeshParameters::declare_parameters (ParameterHandler &prm)
                      "2",
                      Integer (1, 4),
                      "Polynomial degree of the geometry mapping (2 for curved walls).");
+  prm.declare_entry (
+      "wall face weight",
+      "0",
+      Double (0, 100),
+      "Load balancing: the cost of a cell face on a wall, relative to the cost of a "
+      "cell (1), when the MPI ranks' partition is made (at the start, and at every "
+      "adaptation with p4est). 0: the cells are balanced by count. Measured "
+      "(doc/benchmarks.md): a Johnson-Jackson wall face adds ~0.7 of a cell's flow "
+      "assembly in 3D (~0.3 of its whole step) and nothing measurable in 2D.");
   prm.leave_subsection ();
 }
 
@@ -63,6 +72,7 @@ void MeshParameters::parse_parameters (ParameterHandler &prm)
   wall_name                  = prm.get ("wall");
   cylindrical_wall           = prm.get_bool ("cylindrical wall");
   mapping_degree             = prm.get_integer ("mapping degree");
+  wall_face_weight           = prm.get_double ("wall face weight");
   const std::string periodic = prm.get ("periodic boundaries");
   periodic_direction         = std::string ("xyz").find (prm.get ("periodic direction"));
   prm.leave_subsection ();

@@ -166,6 +166,20 @@ void TwoFluidSolver<dim>::adapt_mesh ()
   solves_since_build = std::numeric_limits<unsigned int>::max () / 2;
 }
 
+template <int dim>
+void TwoFluidSolver<dim>::connect_load_balancing ()
+{
+  const BoundaryIds ids = boundary_ids;
+  cell_weights          = connect_cell_weights<dim> (triangulation,
+                                            parameters.mesh.wall_face_weight,
+                                            [ids] (const types::boundary_id id)
+                                            { return ids.is_wall (id); });
+  if (cell_weights.connected () && Utilities::MPI::n_mpi_processes (communicator) > 1)
+    triangulation.repartition ();
+}
+
+template void TwoFluidSolver<2>::connect_load_balancing ();
+template void TwoFluidSolver<3>::connect_load_balancing ();
 template void TwoFluidSolver<2>::adapt_mesh ();
 template void TwoFluidSolver<3>::adapt_mesh ();
 template void TwoFluidSolver<2>::flag_cells_for_adaptation ();

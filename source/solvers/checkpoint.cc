@@ -230,6 +230,7 @@ void TwoFluidSolver<dim>::resume_from_checkpoint ()
                           "' cannot be loaded (corrupt, or not "
                           "made from mesh/file)");
   }
+  connect_load_balancing ();
   setup_dofs ();
 
   {

@@ -151,6 +151,26 @@ void TwoFluidSolver<dim>::setup_dofs ()
     pcout << "Mesh: " << triangulation.n_global_active_cells () << " cells; flow DoFs "
           << dofs_per_block[0] << " (u_g, u_s) + " << dofs_per_block[1]
           << " (p'), alpha_s DoFs " << alpha_dof_handler.n_dofs () << std::endl;
+  if (!initialized && Utilities::MPI::n_mpi_processes (communicator) > 1)
+  {
+    unsigned int cells = 0, wall_faces = 0;
+    for (const auto &cell : triangulation.active_cell_iterators ())
+      if (cell->is_locally_owned ())
+      {
+        ++cells;
+        for (const auto f : cell->face_indices ())
+          wall_faces += cell->at_boundary (f) &&
+                        boundary_ids.is_wall (cell->face (f)->boundary_id ());
+      }
+    const auto c =
+        Utilities::MPI::min_max_avg (static_cast<double> (cells), communicator);
+    const auto w =
+        Utilities::MPI::min_max_avg (static_cast<double> (wall_faces), communicator);
+    pcout << "Partition: owned cells per rank " << c.min << "-" << c.max
+          << ", wall faces per rank " << w.min << "-" << w.max
+          << " (mesh/wall face weight " << parameters.mesh.wall_face_weight << ")"
+          << std::endl;
+  }
 }
 
 template <int dim>

@@ -104,6 +104,7 @@ void TwoFluidSolver<dim>::initialize ()
                                    folder,
                                    parameters.physical.gravity,
                                    triangulation);
+    connect_load_balancing ();
     make_bubble_analysis ();
     setup_dofs ();
     set_initial_state ();

@@ -17,6 +17,7 @@ struct MeshParameters
   unsigned int periodic_direction; // 0, 1, 2: the axis from the low to the high group
   bool         cylindrical_wall;   // attach a cylinder manifold (axis = gravity) to walls
   unsigned int mapping_degree;
+  double       wall_face_weight; // partition cost of a wall face, relative to a cell's
 
   static void declare_parameters (dealii::ParameterHandler &prm);
   void        parse_parameters (dealii::ParameterHandler &prm);

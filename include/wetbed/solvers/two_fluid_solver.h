@@ -7,6 +7,7 @@
 #include <wetbed/core/manufactured_solution.h>
 #include <wetbed/core/parameters.h>
 #include <wetbed/core/time_integration.h>
+#include <wetbed/mesh/cell_weights.h>
 #include <wetbed/mesh/mesh_input.h>
 #include <wetbed/mesh/partition_independent_triangulation.h>
 #include <wetbed/postprocess/bubble_analysis.h>
@@ -116,6 +117,9 @@ private:
   // adaptive refinement (source/solvers/adaptive_refinement.cc)
   /** Flags, refines/coarsens, transfers every field and its history, rebuilds. */
   void adapt_mesh ();
+  /** Connects the cell weights (mesh/wall face weight) once the walls are known and,
+   * where they are not uniform on several ranks, repartitions the mesh by them. */
+  void connect_load_balancing ();
   void flag_cells_for_adaptation ();
   /** Gives `target - sum m a` back to `a` where `candidate` (else anywhere), in
    * proportion to the room within [0, alpha_max]. */
@@ -225,7 +229,9 @@ private:
 
   PartitionIndependentTriangulation<dim> triangulation;
   BoundaryIds                            boundary_ids;
-  dealii::MappingQ<dim>                  mapping;
+  // the partition's cost model (mesh/wall face weight); unconnected: balance by count
+  boost::signals2::scoped_connection cell_weights;
+  dealii::MappingQ<dim>              mapping;
 
   dealii::FESystem<dim>   flow_fe;
   dealii::DoFHandler<dim> flow_dof_handler;
