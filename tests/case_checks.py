@@ -393,7 +393,7 @@ elif check == "amr":
     folder = os.path.join(work, "amr_resumed")
     shutil.rmtree(folder, ignore_errors=True)
     shutil.copytree(os.path.join(work, "amr_1"), folder)
-    rows = run("bubbling_bed_2d", weighted, 2, folder, resume=True)  # loaded, then repartitioned by cost
+    rows = run("bubbling_bed_2d", weighted, 2, folder, resume=True)  # repartitioned by cost when it adapts
     same_monitors(one, rows, "AMR run resumed at step 20 on 2 ranks", 1e-4)
 elif check == "failure":
     # issue 7: a step that cannot be saved by halving dt stops the run cleanly: status 3,

@@ -174,7 +174,11 @@ void TwoFluidSolver<dim>::connect_load_balancing ()
                                             parameters.mesh.wall_face_weight,
                                             [ids] (const types::boundary_id id)
                                             { return ids.is_wall (id); });
-  if (cell_weights.connected () && Utilities::MPI::n_mpi_processes (communicator) > 1)
+  // a fresh mesh is repartitioned by the weights at once; a mesh loaded from a
+  // checkpoint keeps its partition until the next adaptation (repartitioning the loaded
+  // forest crashed in deal.II 9.4's p4est transfer)
+  if (cell_weights.connected () && Utilities::MPI::n_mpi_processes (communicator) > 1 &&
+      !parameters.checkpoint.resume)
     triangulation.repartition ();
 }
 
