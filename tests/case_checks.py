@@ -279,8 +279,12 @@ elif check == "hdf5":
         raise
     import xml.etree.ElementTree as ElementTree
     folder = os.path.join(work, "hdf5")
+    # with AMR (levels 0-2, a distributor band 2 cm high): the XDMF follows a changing mesh
+    band = 0.02
     rows = run("bubbling_bed_2d", "subsection time stepping\n set end time = 3e-3\n set initial time step = 1e-3\nend\n"
-               "subsection output\n set field interval = 1e-3\n set field format = vtu and hdf5\nend\n", ranks=2, folder=folder)
+               "subsection output\n set field interval = 1e-3\n set field format = vtu and hdf5\nend\n"
+               "subsection adaptive refinement\n set enabled = true\n set interval = 1\n set maximum level = 2\n"
+               f" set distributor band height = {band}\nend\n", ranks=2, folder=folder)
     xdmf = ElementTree.parse(os.path.join(folder, "fields.xdmf")).getroot()
     grids = xdmf.findall(".//Grid[@GridType='Uniform']")
     times = [float(g.find("Time").get("Value")) for g in grids]
@@ -317,6 +321,13 @@ elif check == "hdf5":
     with h5py.File(os.path.join(folder, grids[-1].find("Geometry/DataItem").text.strip().split(":")[0]), "r") as h5:
         ranks = set(h5["rank"][()].ravel().tolist())
     expect(ranks == {0.0, 1.0}, f"both ranks wrote into the one file (rank field {sorted(ranks)})")
+    # every output node below the band belongs to a cell at the maximum level (each cell
+    # writes its own nodes); above it the freeboard is coarser
+    with h5py.File(os.path.join(folder, grids[-1].find("Geometry/DataItem").text.strip().split(":")[0]), "r") as h5:
+        heights, levels = h5["nodes"][()][:, 1], h5["refinement_level"][()].ravel()
+    below, above = levels[heights < band - 1e-9], levels[heights > band + 0.01]
+    expect(len(below) > 0 and below.min() == 2 and above.min() < 2,
+           f"distributor band: levels below {band} m in [{below.min()}, {below.max()}], above it from {above.min()}")
 elif check == "restart":
     # T14: a run continued from a checkpoint equals the uninterrupted run: on the same
     # rank count, on another (1 -> 2), and after SIGTERM (issue 7)

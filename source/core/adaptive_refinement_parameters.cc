@@ -48,6 +48,15 @@ void AdaptiveRefinementParameters::declare_parameters (ParameterHandler &prm)
                      Integer (0, 12),
                      "Adaptations to the initial state (re-imposed on each new mesh) "
                      "before the first step: the bed surface starts resolved.");
+  prm.declare_entry ("distributor band height",
+                     "0",
+                     Double (0),
+                     "Cells with a vertex below this height (m, along -g from the "
+                     "coordinate origin: the inlet plane of the shipped meshes) are "
+                     "refined to maximum level and never coarsened. Bubbles are born at "
+                     "the distributor, before their interfaces are sharp enough to "
+                     "trigger refinement; a bubble born in coarse cells starts too "
+                     "large. 0: no band.");
   prm.leave_subsection ();
 }
 
@@ -55,14 +64,15 @@ void AdaptiveRefinementParameters::parse_parameters (
     ParameterHandler &prm, const unsigned int initial_refinement)
 {
   prm.enter_subsection ("adaptive refinement");
-  enabled           = prm.get_bool ("enabled");
-  interval          = prm.get_integer ("interval");
-  minimum_level     = prm.get_integer ("minimum level");
-  maximum_level     = prm.get_integer ("maximum level");
-  velocity_weight   = prm.get_double ("velocity weight");
-  refine_threshold  = prm.get_double ("refine threshold");
-  coarsen_threshold = prm.get_double ("coarsen threshold");
-  initial_cycles    = prm.get_integer ("initial cycles");
+  enabled                 = prm.get_bool ("enabled");
+  interval                = prm.get_integer ("interval");
+  minimum_level           = prm.get_integer ("minimum level");
+  maximum_level           = prm.get_integer ("maximum level");
+  velocity_weight         = prm.get_double ("velocity weight");
+  refine_threshold        = prm.get_double ("refine threshold");
+  coarsen_threshold       = prm.get_double ("coarsen threshold");
+  initial_cycles          = prm.get_integer ("initial cycles");
+  distributor_band_height = prm.get_double ("distributor band height");
   prm.leave_subsection ();
   const std::string s = "adaptive refinement/";
   require (maximum_level >= minimum_level,

@@ -14,7 +14,9 @@
  * (the jump of alpha_s across the cell, large at gas-emulsion interfaces and zero in
  * the freeboard and a uniform emulsion, plus a Kelly term that follows the solids
  * shear); cells above `refine threshold` are refined and cells below `coarsen
- * threshold` coarsened within [minimum level, maximum level].
+ * threshold` coarsened within [minimum level, maximum level]. Cells in the
+ * distributor band (a vertex below `distributor band height`) go to the maximum level
+ * whatever their indicator: bubbles are born there.
  *
  * Every field and both BDF history levels move with parallel SolutionTransfer. On Q1,
  * refinement interpolates exactly; coarsening injects the parent's vertex values and
@@ -63,14 +65,27 @@ void TwoFluidSolver<dim>::flag_cells_for_adaptation ()
       for (unsigned int k = 0; k < kelly.size (); ++k)
         indicator (k) += amr.velocity_weight * kelly (k) / largest;
   }
+  // the distributor band: cells with a vertex below its height are held at the
+  // maximum level (refined whatever their indicator, never coarsened)
+  const Tensor<1, dim> up      = upward_direction<dim> (parameters.physical.gravity);
+  auto                 in_band = [&] (const auto &cell)
+  {
+    if (amr.distributor_band_height <= 0)
+      return false;
+    for (const unsigned int v : cell->vertex_indices ())
+      if (cell->vertex (v) * up < amr.distributor_band_height)
+        return true;
+    return false;
+  };
   for (const auto &cell : triangulation.active_cell_iterators ())
     if (cell->is_locally_owned ())
     {
-      const double eta = indicator (cell->active_cell_index ());
-      if (eta > amr.refine_threshold &&
+      const double eta    = indicator (cell->active_cell_index ());
+      const bool   banded = in_band (cell);
+      if ((eta > amr.refine_threshold || banded) &&
           cell->level () < static_cast<int> (amr.maximum_level))
         cell->set_refine_flag ();
-      else if (eta < amr.coarsen_threshold &&
+      else if (eta < amr.coarsen_threshold && !banded &&
                cell->level () > static_cast<int> (amr.minimum_level))
         cell->set_coarsen_flag ();
     }
