@@ -18,7 +18,8 @@ void AdaptiveRefinementParameters::declare_parameters (ParameterHandler &prm)
   prm.declare_entry ("minimum level",
                      "0",
                      Integer (0),
-                     "No cell is coarsened below this level (0: the gmsh mesh).");
+                     "No cell is coarsened below this level, and cells below it are "
+                     "refined (0: the gmsh mesh).");
   prm.declare_entry ("maximum level",
                      "2",
                      Integer (0, 12),

@@ -4,6 +4,18 @@
 
 namespace wetbed
 {
+template <int dim>
+unsigned int weighted_boundary_faces (
+    const typename dealii::Triangulation<dim>::cell_iterator &cell,
+    const std::function<bool (dealii::types::boundary_id)>   &is_weighted_boundary)
+{
+  unsigned int faces = 0;
+  for (const auto f : cell->face_indices ())
+    if (cell->at_boundary (f) && is_weighted_boundary (cell->face (f)->boundary_id ()))
+      ++faces;
+  return faces;
+}
+
 namespace
 {
 /** The weight of one cell, in thousandths of a plain cell. */
@@ -14,10 +26,8 @@ cell_weight (const typename dealii::Triangulation<dim>::cell_iterator &cell,
              const double                                              wall_face_weight,
              const std::function<bool (dealii::types::boundary_id)> &is_weighted_boundary)
 {
-  unsigned int wall_faces = 0;
-  for (const auto f : cell->face_indices ())
-    if (cell->at_boundary (f) && is_weighted_boundary (cell->face (f)->boundary_id ()))
-      ++wall_faces;
+  const unsigned int wall_faces =
+      weighted_boundary_faces<dim> (cell, is_weighted_boundary);
   // refinement: the signal is called once per child with the parent
   const double faces = status == dealii::Triangulation<dim>::CELL_REFINE
                            ? 0.5 * wall_faces
@@ -43,6 +53,12 @@ boost::signals2::scoped_connection connect_cell_weights (
       });
 }
 
+template unsigned int
+weighted_boundary_faces<2> (const dealii::Triangulation<2>::cell_iterator &,
+                            const std::function<bool (dealii::types::boundary_id)> &);
+template unsigned int
+weighted_boundary_faces<3> (const dealii::Triangulation<3>::cell_iterator &,
+                            const std::function<bool (dealii::types::boundary_id)> &);
 template boost::signals2::scoped_connection connect_cell_weights<2> (
     dealii::Triangulation<2> &, double, std::function<bool (dealii::types::boundary_id)>);
 template boost::signals2::scoped_connection connect_cell_weights<3> (

@@ -14,7 +14,8 @@
  * (the jump of alpha_s across the cell, large at gas-emulsion interfaces and zero in
  * the freeboard and a uniform emulsion, plus a Kelly term that follows the solids
  * shear); cells above `refine threshold` are refined and cells below `coarsen
- * threshold` coarsened within [minimum level, maximum level]. Cells in the
+ * threshold` coarsened within [minimum level, maximum level] (cells below the minimum
+ * level, as on a mesh that starts coarser, are refined). Cells in the
  * distributor band (a vertex below `distributor band height`) go to the maximum level
  * whatever their indicator: bubbles are born there.
  *
@@ -80,12 +81,14 @@ void TwoFluidSolver<dim>::flag_cells_for_adaptation ()
   for (const auto &cell : triangulation.active_cell_iterators ())
     if (cell->is_locally_owned ())
     {
-      const double eta    = indicator (cell->active_cell_index ());
-      const bool   banded = in_band (cell);
-      if ((eta > amr.refine_threshold || banded) &&
+      const double eta = indicator (cell->active_cell_index ());
+      // below the minimum level or in the band: refined whatever the indicator
+      const bool forced =
+          in_band (cell) || cell->level () < static_cast<int> (amr.minimum_level);
+      if ((eta > amr.refine_threshold || forced) &&
           cell->level () < static_cast<int> (amr.maximum_level))
         cell->set_refine_flag ();
-      else if (eta < amr.coarsen_threshold && !banded &&
+      else if (eta < amr.coarsen_threshold && !in_band (cell) &&
                cell->level () > static_cast<int> (amr.minimum_level))
         cell->set_coarsen_flag ();
     }

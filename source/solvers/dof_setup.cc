@@ -1,4 +1,5 @@
 #include <wetbed/core/input_error.h>
+#include <wetbed/mesh/cell_weights.h>
 #include <wetbed/solvers/two_fluid_solver.h>
 
 #include <deal.II/base/mpi.h>
@@ -153,14 +154,15 @@ void TwoFluidSolver<dim>::setup_dofs ()
           << " (p'), alpha_s DoFs " << alpha_dof_handler.n_dofs () << std::endl;
   if (!initialized && Utilities::MPI::n_mpi_processes (communicator) > 1)
   {
-    unsigned int cells = 0, wall_faces = 0;
+    unsigned int                                   cells = 0, wall_faces = 0;
+    const auto                                     ids = boundary_ids;
+    const std::function<bool (types::boundary_id)> is_wall =
+        [ids] (const types::boundary_id id) { return ids.is_wall (id); };
     for (const auto &cell : triangulation.active_cell_iterators ())
       if (cell->is_locally_owned ())
       {
         ++cells;
-        for (const auto f : cell->face_indices ())
-          wall_faces += cell->at_boundary (f) &&
-                        boundary_ids.is_wall (cell->face (f)->boundary_id ());
+        wall_faces += weighted_boundary_faces<dim> (cell, is_wall);
       }
     const auto c =
         Utilities::MPI::min_max_avg (static_cast<double> (cells), communicator);
