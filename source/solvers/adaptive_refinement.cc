@@ -83,12 +83,12 @@ void TwoFluidSolver<dim>::flag_cells_for_adaptation ()
     {
       const double eta = indicator (cell->active_cell_index ());
       // below the minimum level or in the band: refined whatever the indicator
-      const bool forced =
-          in_band (cell) || cell->level () < static_cast<int> (amr.minimum_level);
+      const bool banded = in_band (cell);
+      const bool forced = banded || cell->level () < static_cast<int> (amr.minimum_level);
       if ((eta > amr.refine_threshold || forced) &&
           cell->level () < static_cast<int> (amr.maximum_level))
         cell->set_refine_flag ();
-      else if (eta < amr.coarsen_threshold && !in_band (cell) &&
+      else if (eta < amr.coarsen_threshold && !banded &&
                cell->level () > static_cast<int> (amr.minimum_level))
         cell->set_coarsen_flag ();
     }

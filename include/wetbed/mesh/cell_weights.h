@@ -9,6 +9,12 @@
 
 namespace wetbed
 {
+/** The faces of `cell` on a boundary for which `is_weighted_boundary` holds. */
+template <int dim>
+unsigned int weighted_boundary_faces (
+    const typename dealii::Triangulation<dim>::cell_iterator &cell,
+    const std::function<bool (dealii::types::boundary_id)>   &is_weighted_boundary);
+
 /**
  * Load balancing by cost: connects a cost model to the triangulation's `weight`
  * signal, which p4est's partitioning sums and balances over the MPI ranks (at the
@@ -20,12 +26,6 @@ namespace wetbed
  * connected and the cells are balanced by count. The returned connection is
  * disconnected when it goes out of scope.
  */
-/** The faces of `cell` on a boundary for which `is_weighted_boundary` holds. */
-template <int dim>
-unsigned int weighted_boundary_faces (
-    const typename dealii::Triangulation<dim>::cell_iterator &cell,
-    const std::function<bool (dealii::types::boundary_id)>   &is_weighted_boundary);
-
 template <int dim>
 boost::signals2::scoped_connection connect_cell_weights (
     dealii::Triangulation<dim>                      &triangulation,
