@@ -398,6 +398,22 @@ std::string case_text (const int           dim,
   return s.str ();
 }
 
+/**
+ * Settings that refine the cells below y = 1/2 once more than `refinement` at the start
+ * (the adaptive refinement's distributor band; no indicator-driven refinement or
+ * coarsening): a mesh with hanging nodes along y = 1/2.
+ */
+std::string hanging_nodes_text (const unsigned int refinement)
+{
+  std::ostringstream s;
+  s << "subsection adaptive refinement\n set enabled = true\n set minimum level = "
+    << refinement << "\n set maximum level = " << refinement + 1
+    << "\n set distributor band height = 0.5\n set refine threshold = 1e30\n"
+    << " set coarsen threshold = 0\n set initial cycles = 1\n set interval = "
+       "1000000\nend\n";
+  return s.str ();
+}
+
 /** Errors (u_g L2, H1, u_s L2, H1, p' L2) and the cell count of one refinement level. */
 template <int dim>
 std::pair<std::array<double, 5>, double> run_level (const Parameters &parameters,
@@ -434,6 +450,8 @@ std::vector<unsigned int> numbers (const std::string &list)
 //                             [LEVELS] [STEPS]
 //   KIND: single | two-fluid | rotation-Nitsche | rotation-strong: steady, a ladder of
 //           LEVELS (default 1,2,3 in 2D, 0,1,2 in 3D);
+//         two-fluid-hanging: two-fluid with the cells below y = 1/2 one level finer
+//           (hanging nodes along y = 1/2 on every mesh of the ladder);
 //         transient-bdf1 | transient-bdf2: quadratic velocities and a linear pressure
 //           (in the discrete spaces on affine cells: no spatial error) times
 //           s(t) = 1 + sin(2 pi t)/2 over 0 < t <= 0.3, on the first of LEVELS, a ladder
@@ -455,6 +473,10 @@ int main (int argc, char **argv)
   const bool polynomial = kind.rfind ("transient", 0) == 0;
   const bool transient  = polynomial || kind.rfind ("space-time", 0) == 0;
   const bool two_fluid = kind != "single", rotation = kind.rfind ("rotation", 0) == 0;
+  // two-fluid-hanging: the lower half of the square one level finer than the upper half
+  // (the distributor band of the adaptive refinement), so every mesh has a line of
+  // hanging nodes at y = 1/2 across the flow
+  const bool        hanging        = kind == "two-fluid-hanging";
   const std::string no_penetration = rotation ? kind.substr (kind.find ('-') + 1) : "";
   const std::string source = argv[3], work = argv[4];
   // diagnosis: a file of further settings appended to every level's case
@@ -516,6 +538,7 @@ int main (int argc, char **argv)
     std::filesystem::create_directories (folder);
     const std::string prm_file = folder + "/case.prm";
     std::ofstream (prm_file) << case_text (dim, mesh, level, folder, no_penetration, time)
+                             << (hanging ? hanging_nodes_text (level) : "")
                              << extra_settings;
     dealii::ParameterHandler prm;
     const Parameters         parameters = Parameters::read (prm_file, prm);
@@ -531,6 +554,12 @@ int main (int argc, char **argv)
     for (const double value : e)
       std::cout << " " << std::setprecision (6) << std::scientific << value;
     std::cout << std::defaultfloat << std::endl;
+    // the hanging nodes are there: more cells than the uniform mesh of the level (the
+    // square has 16 cells at level 0), fewer than the next level's
+    if (hanging)
+      testing::check (n_cells > 16 * std::pow (4.0, level) &&
+                          n_cells < 16 * std::pow (4.0, level + 1),
+                      "a locally refined mesh at level " + std::to_string (level));
     errors.push_back (e);
     sizes.push_back (polynomial ? time.end_time / n_steps
                                 : std::pow (n_cells, -1.0 / dim));
