@@ -49,7 +49,8 @@ void VolumeFractionTransport<dim>::setup (
   scratch_low.reinit (work);
   scratch_plus.reinit (work);
   scratch_minus.reinit (work);
-  Vector condensed_mass (layout);
+  Vector condensed_mass;
+  condensed_mass.reinit (layout); // the layout only: zero entries, whatever layout holds
 
   const QGauss<dim> quadrature (dof_handler.get_fe ().degree + 1);
   FEValues<dim>     fe_values (
