@@ -35,7 +35,11 @@ class VolumeFractionTransport
 public:
   using Vector = dealii::LinearAlgebra::distributed::Vector<double>;
 
-  /** Builds the graph, the lumped mass and the derivative matrices (once per mesh). */
+  /**
+   * Builds the graph, the lumped mass and the derivative matrices (once per mesh).
+   * `layout` gives the parallel layout of the alpha_s vectors (owned and ghost dofs);
+   * its values are not used.
+   */
   void setup (const dealii::DoFHandler<dim>           &dof_handler,
               const dealii::Mapping<dim>              &mapping,
               const dealii::AffineConstraints<double> &hanging_node_constraints,
