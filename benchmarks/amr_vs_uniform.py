@@ -10,7 +10,8 @@ With --case another prm/CASE.prm (its own work folder, doc section and plot); --
 only some of the four (the others are tabulated from their folders if present).
 
 usage: python3 benchmarks/amr_vs_uniform.py [--case bubbling_bed_2d] [--end-time 5]
-       [--start-up 1] [--level 0] [--runs uniform_<L> amr ...] [--jobs 2] [--summarize-only]      (build first: bash scripts/build.sh)
+       [--start-up 1] [--level 0] [--runs uniform_<L> amr ...] [--jobs 2] [--summarize-only]
+       [--until T] [--no-doc] [--work-folder DIR]      (build first: bash scripts/build.sh)
 """
 import argparse
 import csv
@@ -39,10 +40,15 @@ parser.add_argument("--amr-variants", nargs="*", default=[],
                     "run 'amr' keeps the prm's values")
 parser.add_argument("--until", type=float, default=None,
                     help="average over start-up < t <= UNTIL only (compare runs of which one stopped early)")
+parser.add_argument("--no-doc", action="store_true",
+                    help="print the table only: doc/benchmarks.md and the plot stay as they are (for partial or "
+                    "exploratory summaries, e.g. with --until)")
+parser.add_argument("--work-folder", default=None,
+                    help="the runs' folder (default build/benchmarks/amr_vs_uniform[_CASE])")
 args = parser.parse_args()
 
 suffix = "" if args.case == "bubbling_bed_2d" else "_" + args.case  # of the work folder, doc section and plot
-work = os.path.join(root, "build", "benchmarks", "amr_vs_uniform" + suffix)
+work = os.path.abspath(args.work_folder) if args.work_folder else os.path.join(root, "build", "benchmarks", "amr_vs_uniform" + suffix)
 os.makedirs(work, exist_ok=True)
 base = read_case(args.case)
 L = args.level
@@ -132,6 +138,10 @@ lines += ["", f"![error vs cost](amr_vs_uniform{suffix}.png)"]
 for name, s in results.items():
     print(name, {k: s[k] for k in ("cells", "per_second", "mean_fi", "fi_error", "bed_height", "height_error",
                                    "bubble_diameter", "diameter_error", "diameter_error_sigma")})
+
+if args.no_doc:
+    print("\n".join(lines))
+    raise SystemExit(0)
 
 import matplotlib  # noqa: E402
 matplotlib.use("Agg")
