@@ -7,11 +7,13 @@ uniform run. Regenerates the 'amr_vs_uniform' section of doc/benchmarks.md and
 doc/amr_vs_uniform.png.
 
 With --case another prm/CASE.prm (its own work folder, doc section and plot); --runs runs
-only some of the four (the others are tabulated from their folders if present).
+only some of the four (the others are tabulated from their folders if present);
+--branch-from RUN starts them from RUN's checkpoint (the same developed bed for all, a
+short comparison window after it).
 
 usage: python3 benchmarks/amr_vs_uniform.py [--case bubbling_bed_2d] [--end-time 5]
        [--start-up 1] [--level 0] [--runs uniform_<L> amr ...] [--jobs 2] [--summarize-only]
-       [--until T] [--no-doc] [--work-folder DIR]      (build first: bash scripts/build.sh)
+       [--until T] [--no-doc] [--work-folder DIR] [--branch-from RUN]      (build first: bash scripts/build.sh)
 """
 import argparse
 import csv
@@ -19,6 +21,7 @@ import json
 import math
 import os
 import re
+import shutil
 import subprocess
 from concurrent.futures import ThreadPoolExecutor
 
@@ -43,6 +46,11 @@ parser.add_argument("--until", type=float, default=None,
 parser.add_argument("--no-doc", action="store_true",
                     help="print the table only: doc/benchmarks.md and the plot stay as they are (for partial or "
                     "exploratory summaries, e.g. with --until)")
+parser.add_argument("--branch-from", default=None, metavar="RUN",
+                    help="start each of --runs from the checkpoint of RUN (a finished or stopped run in the work "
+                    "folder, e.g. uniform_3 run with a checkpoint at its end) instead of from t = 0: every run "
+                    "then starts from the same developed bed and the comparison window (start-up < t) can begin "
+                    "at the checkpoint's time")
 parser.add_argument("--work-folder", default=None,
                     help="the runs' folder (default build/benchmarks/amr_vs_uniform[_CASE])")
 args = parser.parse_args()
@@ -63,10 +71,35 @@ for variant in args.amr_variants:
 
 
 def run(name):
-    prm, folder, log = write_case(work, name, base, args.end_time, cases[name], field_interval=0, progress_interval=500)
+    prm, folder, log = write_case(work, name, base, args.end_time, cases[name], field_interval=0, progress_interval=100)
+    command = [os.path.join(root, "build", "wetbed"), prm]
+    if args.branch_from and name != args.branch_from:
+        # the branch's checkpoint, its monitors and bubble files (cut back to the checkpoint
+        # on resume) and its mesh: the run continues the branch's bed with its own settings
+        source = os.path.join(work, args.branch_from)
+        if not os.path.isfile(os.path.join(source, "checkpoint", "state")):
+            raise SystemExit(f"--branch-from {args.branch_from}: no checkpoint in {source}")
+        shutil.rmtree(folder, ignore_errors=True)
+        shutil.copytree(os.path.join(source, "checkpoint"), os.path.join(folder, "checkpoint"))
+        for f in os.listdir(source):
+            if f.endswith(".csv") or f == "mesh.msh":
+                shutil.copy2(os.path.join(source, f), folder)
+        command.append("--resume")
     with open(log, "w") as out:
-        subprocess.run([os.path.join(root, "build", "wetbed"), prm], stdout=out, stderr=subprocess.STDOUT)
+        subprocess.run(command, stdout=out, stderr=subprocess.STDOUT)
     return name
+
+
+def window_cost(log, start, until):
+    """Wall s per simulated s between the first progress line after START and the last one
+    at or before UNTIL (the developed bed only, and valid for resumed runs, whose logs count
+    the wall time from the resume); None without two such lines."""
+    points = [(float(t), float(w)) for t, w in
+              re.findall(r"^step\s+\d+\s+t =\s+(\S+) s.*wall (\S+) s", open(log).read(), re.M)]
+    points = [p for p in points if start < p[0] <= until + 1e-12]
+    if len(points) < 2 or points[-1][0] <= points[0][0]:
+        return None
+    return (points[-1][1] - points[0][1]) / (points[-1][0] - points[0][0])
 
 
 if not args.summarize_only:
@@ -93,6 +126,9 @@ for name in cases:
         wall = os.path.getmtime(os.path.join(folder, "monitors.csv")) - os.path.getmtime(os.path.join(work, name + ".prm"))
         summary["per_second"] = wall / t[-1]
         summary["wall"], summary["steps"] = wall, len(rows) - 1
+    windowed = window_cost(log, args.start_up, until)
+    if windowed is not None:
+        summary["per_second"] = windowed
     summary["cells"] = sum(int(r["active_cells"]) * dt[i] for i, r in enumerate(rows) if i in after) / weight
     summary["bed_height"] = sum(float(rows[i]["bed_height"]) * dt[i] for i in after) / weight
     summary["bubble_diameter"] = bubble_diameter(folder, args.start_up, until)
@@ -106,9 +142,13 @@ finest = results.get(f"uniform_{L + 2}")
 lines = [f"Command: `python3 benchmarks/amr_vs_uniform.py --case {args.case} --end-time {args.end_time} --start-up {args.start_up} "
          f"--level {L} --jobs {args.jobs}"
          + "".join(f" --amr-variants " + " ".join(f"'{v}'" for v in args.amr_variants) for _ in args.amr_variants[:1])
+         + (f" --branch-from {args.branch_from}" if args.branch_from else "")
+         + (f" --until {args.until}" if args.until else "")
          + f"` (serial runs, {args.jobs} at a time on this 2-core machine). "
-         f"Means over {args.start_up} s < t ≤ {args.until or args.end_time} s; errors against the finest uniform run "
-         f"(level {L + 2}); a run that had not reached the end time is costed from its file times.", "",
+         + (f"Every run but {args.branch_from} continues {args.branch_from}'s checkpoint. " if args.branch_from else "")
+         + f"Means over {args.start_up} s < t ≤ {args.until or args.end_time} s; errors against the finest uniform run "
+         f"(level {L + 2}); s per simulated s from the progress lines over that window (the developed bed; "
+         f"from the file times where a log has no two such lines).", "",
          "| run | cells (mean) | steps (rejected) | wall s | s per simulated s | FI mean | FI error | bed height (m) | "
          "height error | bubble diameter (mm) ± standard error | diameter error ± standard error | α_s range | mass drift |",
          "|" + "---|" * 13]
