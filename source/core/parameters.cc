@@ -271,12 +271,16 @@ void LinearSolverParameters::declare_parameters (ParameterHandler &prm)
                      "(benchmarks/solver_diagnosis.py, doc/benchmarks.md).");
   prm.declare_entry ("inner solves",
                      "V-cycle",
-                     Selection ("V-cycle|exact"),
+                     Selection ("V-cycle|exact|exact velocity"),
                      "V-cycle: one AMG V-cycle per block (the product). exact: the "
                      "velocity block by a sparse direct solver (Amesos KLU) and the "
                      "pressure Schur approximation by CG to 1e-10, to tell how many "
                      "FGMRES iterations the Schur approximation itself costs (slow; "
-                     "for diagnosis, see benchmarks/solver_diagnosis.py).");
+                     "for diagnosis, see benchmarks/solver_diagnosis.py). exact "
+                     "velocity: the direct velocity solve with the Schur V-cycle, to "
+                     "tell the velocity V-cycle's iterations from the Schur "
+                     "approximation's (with `rebuild interval = 1`, else the "
+                     "factorisation is reused like the AMG).");
   prm.declare_entry (
       "aggregation threshold", "1e-4", Double (0, 1), "ML aggregation threshold.");
   prm.declare_entry ("rebuild growth",

@@ -5,7 +5,8 @@
 namespace wetbed
 {
 BlockPreconditioner::BlockPreconditioner (const LinearSolverParameters &parameters)
-    : parameters (parameters), exact (parameters.inner_solves == "exact")
+    : parameters (parameters), exact (parameters.inner_solves == "exact"),
+      exact_velocity (exact || parameters.inner_solves == "exact velocity")
 {
 }
 
@@ -41,7 +42,7 @@ void BlockPreconditioner::build_velocity (
     ml.set ("smoother: type", "ILU");
   else if (parameters.smoother == "block Gauss-Seidel")
     ml.set ("smoother: type", "symmetric block Gauss-Seidel");
-  if (exact)
+  if (exact_velocity)
   {
     velocity_direct =
         std::make_unique<dealii::TrilinosWrappers::SolverDirect> (direct_control);
@@ -79,7 +80,7 @@ void BlockPreconditioner::vmult (BlockVector &dst, const BlockVector &src) const
   // velocity: y_u = A^{-1}(r_u - B^T y_p)
   gradient->vmult (velocity_tmp, dst.block (1));
   velocity_tmp.sadd (-1.0, src.block (0));
-  if (exact)
+  if (exact_velocity)
     velocity_direct->solve (dst.block (0), velocity_tmp);
   else
     velocity_amg.vmult (dst.block (0), velocity_tmp);

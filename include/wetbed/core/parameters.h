@@ -98,7 +98,7 @@ struct LinearSolverParameters
   double       relative_tolerance, scalar_tolerance;
   unsigned int maximum_iterations, restart;
   std::string  smoother;
-  std::string  inner_solves; // V-cycle (default) or exact (diagnosis of the iterations)
+  std::string  inner_solves; // V-cycle (default), exact or exact velocity (diagnosis)
   unsigned int smoother_sweeps;
   bool         rotation_modes; // rigid rotations in the velocity AMG's near-null space
   double       aggregation_threshold;

@@ -22,6 +22,7 @@ namespace wetbed
  * smoothed-aggregation V-cycle on the partial-elimination mobility Laplacian. With
  * `inner solves = exact`, A^{-1} is a sparse direct solve and L_c^{-1} a CG solve to
  * 1e-10 (diagnosis: the FGMRES count is then that of the Schur approximation alone).
+ * With `inner solves = exact velocity` only the velocity solve is direct.
  */
 class BlockPreconditioner
 {
@@ -50,11 +51,12 @@ public:
   unsigned int velocity_builds = 0, schur_builds = 0;
 
 private:
-  const LinearSolverParameters                                   &parameters;
-  dealii::TrilinosWrappers::PreconditionAMG                       velocity_amg, schur_amg;
-  const dealii::TrilinosWrappers::SparseMatrix                   *gradient = nullptr;
-  const dealii::TrilinosWrappers::SparseMatrix                   *schur    = nullptr;
-  bool                                                            exact    = false;
+  const LinearSolverParameters                 &parameters;
+  dealii::TrilinosWrappers::PreconditionAMG     velocity_amg, schur_amg;
+  const dealii::TrilinosWrappers::SparseMatrix *gradient = nullptr;
+  const dealii::TrilinosWrappers::SparseMatrix *schur    = nullptr;
+  bool                                          exact    = false;
+  bool exact_velocity = false; // `inner solves = exact velocity`: direct velocity only
   mutable dealii::SolverControl                                   direct_control;
   mutable std::unique_ptr<dealii::TrilinosWrappers::SolverDirect> velocity_direct;
   mutable dealii::TrilinosWrappers::MPI::Vector                   velocity_tmp;
