@@ -56,7 +56,9 @@ ladders = {
 }
 lines = [f"Command: `python3 benchmarks/solver_scaling.py --end-time {args.end_time:g}` (prm/bubbling_bed_2d.prm, "
          f"first {args.end_time:g} s of the start-up, serial, default solver settings; the Δt and drag ladders at "
-         "level 1 (600 cells), the drag varied through the particle diameter, Stokes drag ∝ 1/d²).", "",
+         "level 1 (600 cells), the drag varied through the particle diameter, Stokes drag ∝ 1/d²; the wet ladders "
+         "on prm/wet_column_2d.prm; 'same Δt': the adaptive start-up steps, identical on every mesh; 'fixed Courant "
+         "number': Δt halved with h).", "",
          "| ladder | run | cells | steps | FGMRES its/solve | setups | setup s per build | Krylov ms per iteration | total s |",
          "|---|---|---|---|---|---|---|---|---|"]
 growth = {}
