@@ -10,7 +10,7 @@ refinements) and at a fixed Courant number (dt = 4e-4, 2e-4, 1e-4 s on levels 0,
 2, as CFL control gives in a developed flow); the second also for the wet column
 (prm/wet_column_2d.prm, liquid-bridge viscosity). Prints the growth of the iterations
 over two refinements (target: at most 30%) and writes the 'solver_scaling' section of
-doc/benchmarks.md.
+doc/benchmarks.md and doc/solver_scaling.png.
 
 usage: python3 benchmarks/solver_scaling.py [--end-time 0.01]
 (build first: bash scripts/build.sh)
@@ -62,11 +62,14 @@ lines = [f"Command: `python3 benchmarks/solver_scaling.py --end-time {args.end_t
          "| ladder | run | cells | steps | FGMRES its/solve | setups | setup s per build | Krylov ms per iteration | total s |",
          "|---|---|---|---|---|---|---|---|---|"]
 growth = {}
+curves = {}  # h ladders: (cells, its/solve) per run
 for ladder, runs in ladders.items():
     its = []
+    curves[ladder] = []
     for label, name, sections in runs:
         r = solver_run(root, work, name, wet if "wet" in ladder else base, args.end_time, sections)
         its.append(r["its"])
+        curves[ladder].append((r["cells"], r["its"]))
         row = (f"| {ladder} | {label} | {r['cells']} | {r['steps']} | {r['its']:.1f} | {r['setups']} | "
                f"{r['setup'] / max(r['setups'], 1):.3f} | {1e3 * r['krylov'] / max(r['iterations'], 1):.2f} | {r['total']:.1f} |")
         lines.append(row)
@@ -86,4 +89,22 @@ lines += ["", "Growth of FGMRES iterations per solve over two refinements (level
           f"{over('h, wet, same Δt')}. Over the Δt ladder at level 1 (1e-4 → 1e-3 s): {growth['Δt'][2]:+.0f}%; "
           f"over the drag ladder (d = 700 → 175 µm, β × 16): {growth['drag'][2]:+.0f}%."]
 print(lines[-1])
+lines += ["", "![iterations against cells](solver_scaling.png)"]
+
+import matplotlib  # noqa: E402
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+fig, ax = plt.subplots(figsize=(6.5, 4.2))
+for i, ladder in enumerate(name for name in ladders if name.startswith("h")):
+    cells, per_solve = zip(*curves[ladder])
+    ax.plot(cells, per_solve, "o-" if "Courant" in ladder else "s--", color=f"C{i}",
+            label=("dry bed" if "wet" not in ladder else "wet column") + (", Δt ∝ h" if "Courant" in ladder else ", same Δt"))
+ax.set_xscale("log")
+ax.set_xlabel("cells")
+ax.set_ylabel("FGMRES iterations per solve")
+ax.set_ylim(bottom=0)
+ax.legend(fontsize=8)
+ax.set_title("Coupled solve: iterations against refinement")
+fig.tight_layout()
+fig.savefig(os.path.join(root, "doc", "solver_scaling.png"), dpi=110)
 replace_doc_section(root, "solver_scaling", "Solver scaling: iterations against h, Δt and drag (2D bed, start-up)", lines)
