@@ -18,14 +18,14 @@ usage: python3 benchmarks/amr_vs_uniform.py [--case bubbling_bed_2d] [--end-time
 import argparse
 import csv
 import json
-import math
 import os
 import re
 import shutil
 import subprocess
 from concurrent.futures import ThreadPoolExecutor
 
-from benchmark_setup import bubble_diameter, bubble_diameter_standard_error, read_case, replace_doc_section, repository_root, summarize_run, write_case
+from benchmark_setup import (bubble_diameter, bubble_diameter_difference_standard_error, bubble_diameter_standard_error,
+                             read_case, replace_doc_section, repository_root, summarize_run, write_case)
 
 root = repository_root()
 parser = argparse.ArgumentParser()
@@ -51,6 +51,9 @@ parser.add_argument("--branch-from", default=None, metavar="RUN",
                     "folder, e.g. uniform_3 run with a checkpoint at its end) instead of from t = 0: every run "
                     "then starts from the same developed bed and the comparison window (start-up < t) can begin "
                     "at the checkpoint's time")
+parser.add_argument("--batch", type=float, default=0.5,
+                    help="seconds per batch of the batch-means standard errors of the bubble diameter (longer "
+                    "than the bubbling's correlation time)")
 parser.add_argument("--work-folder", default=None,
                     help="the runs' folder (default build/benchmarks/amr_vs_uniform[_CASE])")
 args = parser.parse_args()
@@ -132,7 +135,7 @@ for name in cases:
     summary["cells"] = sum(int(r["active_cells"]) * dt[i] for i, r in enumerate(rows) if i in after) / weight
     summary["bed_height"] = sum(float(rows[i]["bed_height"]) * dt[i] for i in after) / weight
     summary["bubble_diameter"] = bubble_diameter(folder, args.start_up, until)
-    summary["bubble_diameter_error"] = bubble_diameter_standard_error(folder, args.start_up, until)
+    summary["bubble_diameter_error"] = bubble_diameter_standard_error(folder, args.start_up, until, args.batch)
     log_text = open(log).read()
     summary["flow_dofs_first"] = log_text.split("flow DoFs ")[1].split(" ")[0] if "flow DoFs " in log_text else "?"
     results[name] = summary
@@ -141,9 +144,9 @@ json.dump(results, open(os.path.join(work, "results.json"), "w"), indent=1)
 finest = results.get(f"uniform_{L + 2}")
 lines = [f"Command: `python3 benchmarks/amr_vs_uniform.py --case {args.case} --end-time {args.end_time} --start-up {args.start_up} "
          f"--level {L} --jobs {args.jobs}"
-         + "".join(f" --amr-variants " + " ".join(f"'{v}'" for v in args.amr_variants) for _ in args.amr_variants[:1])
+         + "".join(" --amr-variants " + " ".join(f"'{v}'" for v in args.amr_variants) for _ in args.amr_variants[:1])
          + (f" --branch-from {args.branch_from}" if args.branch_from else "")
-         + (f" --until {args.until}" if args.until else "")
+         + (f" --until {args.until}" if args.until else "") + f" --batch {args.batch}"
          + f"` (serial runs, {args.jobs} at a time on this 2-core machine). "
          + (f"Every run but {args.branch_from} continues {args.branch_from}'s checkpoint. " if args.branch_from else "")
          + f"Means over {args.start_up} s < t ≤ {args.until or args.end_time} s; errors against the finest uniform run "
@@ -156,10 +159,10 @@ for name, s in results.items():
     fi_error = abs(s["mean_fi"] / finest["mean_fi"] - 1) if finest else float("nan")
     h_error = abs(s["bed_height"] / finest["bed_height"] - 1) if finest else float("nan")
     d_error = abs(s["bubble_diameter"] / finest["bubble_diameter"] - 1) if finest else float("nan")
-    # the standard error of the ratio of two independent means (first order)
-    d_sigma = (s["bubble_diameter"] / finest["bubble_diameter"] * math.hypot(
-        s["bubble_diameter_error"] / s["bubble_diameter"], finest["bubble_diameter_error"] / finest["bubble_diameter"])
-        if finest and s is not finest else float("nan"))
+    # paired batch means: valid for independent runs and for runs branched from one state
+    d_sigma = (bubble_diameter_difference_standard_error(os.path.join(work, name), os.path.join(work, f"uniform_{L + 2}"),
+                                                         args.start_up, args.until or args.end_time, args.batch)
+               if finest and s is not finest else float("nan"))
     s["diameter_error_sigma"] = d_sigma
     s["fi_error"], s["height_error"], s["diameter_error"] = fi_error, h_error, d_error
     label = name if s["finished"] else f"{name} (to {s['end']:.3f} s)"
@@ -173,7 +176,7 @@ if finest and "amr" in results:
                   f"second, FI within {100 * results['amr']['fi_error']:.2f}%, bed height within "
                   f"{100 * results['amr']['height_error']:.2f}%, mean bubble diameter within "
                   f"{100 * results['amr']['diameter_error']:.1f}% ± {100 * results['amr']['diameter_error_sigma']:.1f}% "
-                  f"(one standard error of the two runs' finite windows; goal: within 5% for at least 3× less wall time)."]
+                  f"(one standard error, paired batch means of {args.batch} s; goal: within 5% for at least 3× less wall time)."]
 lines += ["", f"![error vs cost](amr_vs_uniform{suffix}.png)"]
 for name, s in results.items():
     print(name, {k: s[k] for k in ("cells", "per_second", "mean_fi", "fi_error", "bed_height", "height_error",
