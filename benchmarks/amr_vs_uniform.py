@@ -13,7 +13,12 @@ short comparison window after it).
 
 usage: python3 benchmarks/amr_vs_uniform.py [--case bubbling_bed_2d] [--end-time 5]
        [--start-up 1] [--level 0] [--runs uniform_<L> amr ...] [--jobs 2] [--summarize-only]
-       [--until T] [--no-doc] [--work-folder DIR] [--branch-from RUN]      (build first: bash scripts/build.sh)
+       [--until T] [--no-doc] [--work-folder DIR] [--branch-from RUN] [--batch 0.5]
+       (build first: bash scripts/build.sh)
+
+The bubble-diameter standard errors are batch means over batches of --batch seconds; the
+AMR-vs-finest difference is tested by paired batch means (the batch-by-batch differences
+of the two runs), which stays valid when the runs branch from one checkpoint.
 """
 import argparse
 import csv
