@@ -13,7 +13,7 @@ short comparison window after it).
 
 usage: python3 benchmarks/amr_vs_uniform.py [--case bubbling_bed_2d] [--end-time 5]
        [--start-up 1] [--level 0] [--runs uniform_<L> amr ...] [--jobs 2] [--summarize-only]
-       [--until T] [--no-doc] [--work-folder DIR] [--branch-from RUN] [--batch 0.5]
+       [--until T] [--no-doc] [--work-folder DIR] [--branch-from RUN] [--batch 0.5] [--cost-from T]
        (build first: bash scripts/build.sh)
 
 The bubble-diameter standard errors are batch means over batches of --batch seconds; the
@@ -56,6 +56,9 @@ parser.add_argument("--branch-from", default=None, metavar="RUN",
                     "folder, e.g. uniform_3 run with a checkpoint at its end) instead of from t = 0: every run "
                     "then starts from the same developed bed and the comparison window (start-up < t) can begin "
                     "at the checkpoint's time")
+parser.add_argument("--cost-from", type=float, default=None, metavar="T",
+                    help="wall time per simulated second over T < t <= UNTIL only (default: the whole window), "
+                    "e.g. the stretch that all runs covered one per core with nothing else on the machine")
 parser.add_argument("--batch", type=float, default=0.5,
                     help="seconds per batch of the batch-means standard errors of the bubble diameter (longer "
                     "than the bubbling's correlation time)")
@@ -99,15 +102,19 @@ def run(name):
 
 
 def window_cost(log, start, until):
-    """Wall s per simulated s between the first progress line after START and the last one
-    at or before UNTIL (the developed bed only, and valid for resumed runs, whose logs count
-    the wall time from the resume); None without two such lines."""
-    points = [(float(t), float(w)) for t, w in
-              re.findall(r"^step\s+\d+\s+t =\s+(\S+) s.*wall (\S+) s", open(log).read(), re.M)]
-    points = [p for p in points if start < p[0] <= until + 1e-12]
-    if len(points) < 2 or points[-1][0] <= points[0][0]:
-        return None
-    return (points[-1][1] - points[0][1]) / (points[-1][0] - points[0][0])
+    """Wall s per simulated s over the progress lines with START < t <= UNTIL (the developed
+    bed only). A log may hold several pieces of a run (the logs of its resumes, concatenated:
+    each piece starts at a "Resumed from" line and counts its wall time from there); the
+    wall and simulated time of each piece's span are summed. None without a span."""
+    wall = simulated = 0.0
+    for piece in re.split(r"^(?=Resumed from)", open(log).read(), flags=re.M):
+        points = [(float(t), float(w)) for t, w in
+                  re.findall(r"^step\s+\d+\s+t =\s+(\S+) s.*wall (\S+) s", piece, re.M)]
+        points = [p for p in points if start < p[0] <= until + 1e-12]
+        if len(points) >= 2 and points[-1][0] > points[0][0]:
+            wall += points[-1][1] - points[0][1]
+            simulated += points[-1][0] - points[0][0]
+    return wall / simulated if simulated > 0 else None
 
 
 if not args.summarize_only:
@@ -134,9 +141,11 @@ for name in cases:
         wall = os.path.getmtime(os.path.join(folder, "monitors.csv")) - os.path.getmtime(os.path.join(work, name + ".prm"))
         summary["per_second"] = wall / t[-1]
         summary["wall"], summary["steps"] = wall, len(rows) - 1
-    windowed = window_cost(log, args.start_up, until)
+    windowed = window_cost(log, args.start_up if args.cost_from is None else args.cost_from, until)
     if windowed is not None:
         summary["per_second"] = windowed
+        if not summary["finished"]:  # resumed or branched: no whole-run wall time to show
+            summary["wall"] = float("nan")
     summary["cells"] = sum(int(r["active_cells"]) * dt[i] for i, r in enumerate(rows) if i in after) / weight
     summary["bed_height"] = sum(float(rows[i]["bed_height"]) * dt[i] for i in after) / weight
     summary["bubble_diameter"] = bubble_diameter(folder, args.start_up, until)
@@ -152,11 +161,14 @@ lines = [f"Command: `python3 benchmarks/amr_vs_uniform.py --case {args.case} --e
          + "".join(" --amr-variants " + " ".join(f"'{v}'" for v in args.amr_variants) for _ in args.amr_variants[:1])
          + (f" --branch-from {args.branch_from}" if args.branch_from else "")
          + (f" --until {args.until}" if args.until else "") + f" --batch {args.batch}"
+         + (f" --cost-from {args.cost_from}" if args.cost_from is not None else "")
          + f"` (serial runs, {args.jobs} at a time on this 2-core machine). "
          + (f"Every run but {args.branch_from} continues {args.branch_from}'s checkpoint. " if args.branch_from else "")
          + f"Means over {args.start_up} s < t ≤ {args.until or args.end_time} s; errors against the finest uniform run "
-         f"(level {L + 2}); s per simulated s from the progress lines over that window (the developed bed; "
-         f"from the file times where a log has no two such lines).", "",
+         f"(level {L + 2}); s per simulated s from the progress lines over "
+         + (f"{args.cost_from} s < t ≤ {args.until or args.end_time} s" if args.cost_from is not None else "that window")
+         + " (the developed bed; "
+         "from the file times where a log has no two such lines).", "",
          "| run | cells (mean) | steps (rejected) | wall s | s per simulated s | FI mean | FI error | bed height (m) | "
          "height error | bubble diameter (mm) ± standard error | diameter error ± standard error | α_s range | mass drift |",
          "|" + "---|" * 13]
@@ -171,7 +183,7 @@ for name, s in results.items():
     s["diameter_error_sigma"] = d_sigma
     s["fi_error"], s["height_error"], s["diameter_error"] = fi_error, h_error, d_error
     label = name if s["finished"] else f"{name} (to {s['end']:.3f} s)"
-    lines.append(f"| {label} | {s['cells']:.0f} | {s['steps']} ({s['rejected']}) | {s['wall']:.0f} | {s['per_second']:.0f} | "
+    lines.append(f"| {label} | {s['cells']:.0f} | {s['steps']} ({s['rejected']}) | {'–' if s['wall'] != s['wall'] else format(s['wall'], '.0f')} | {s['per_second']:.0f} | "
                  f"{s['mean_fi']:.4f} | {100 * fi_error:.2f}% | {s['bed_height']:.4f} | {100 * h_error:.2f}% | "
                  f"{1000 * s['bubble_diameter']:.1f} ± {1000 * s['bubble_diameter_error']:.1f} | "
                  f"{100 * d_error:.1f}% ± {100 * d_sigma:.1f}% | [{s['alpha_min']:.1e}, {s['alpha_max']:.4f}] | {s['drift']:.1e} |")
