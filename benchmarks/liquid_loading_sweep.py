@@ -161,7 +161,7 @@ def number(value, form):
 lines = [f"## Liquid-loading sweep (prm/wet_column_2d.prm, 600 cells, serial, {args.jobs} at a time)",
          f"Command: `python3 benchmarks/liquid_loading_sweep.py --end-time {args.end_time:g} --start-up {args.start_up:g} --jobs {args.jobs}"
          + (f" --maximum-wet-viscosity {args.maximum_wet_viscosity:g}" if cap else "") + "`"
-         " (continued over sittings from checkpoints; wall time summed over the pieces). Means over"
+         " (resumable: a stopped run continues from its checkpoint; wall time summed over the pieces). Means over"
          f" t > {args.start_up:g} s; the stress split is the share of each part in the summed solids shear"
          " stress μ_i|γ̇| and the dissipation the mean collisional γ over the field outputs' cells with α_s > 0.3.", "",
          "| δ (10⁻²) | completed | simulated | rejected | α_s range | Θ range (m²/s²) | FI mean | 0.5 s windows | dominant frequency at 7.6 cm (Hz) | bubbles (mean count) | bubble d (mm) | shear stress kin/col/fr/wet (%) | γ (W/m³) | FGMRES its/step | s per simulated s |",
@@ -232,6 +232,6 @@ if stress_figure:
 replace_doc_section(root, "liquid_loading_sweep" + suffix, "Liquid-loading sweep" + (f", μ_wet capped at {args.maximum_wet_viscosity:g} Pa·s" if cap else ""),
                     lines + ["", f"![FI(t) of the sweep](liquid_loading_fi{suffix}.png)"]
                     + (["", f"![stress split, dissipation and Θ against α_s](liquid_loading_stress{suffix}.png)"] if stress_figure
-                       else ["", f"![stress split, dissipation and Θ against α_s, drawn by an earlier sitting whose field "
-                             f"outputs are not kept](liquid_loading_stress{suffix}.png)"]
+                       else ["", f"![stress split, dissipation and Θ against α_s, drawn from field outputs that are not "
+                             f"stored with the results](liquid_loading_stress{suffix}.png)"]
                        if os.path.exists(os.path.join(root, "doc", f"liquid_loading_stress{suffix}.png")) else []))

@@ -143,7 +143,7 @@ for label in all_labels:
         results.append(json.load(open(stored)))
 
 lines = [f"Command: `python3 benchmarks/stress.py --end-time {args.end_time:g} --jobs {args.jobs}`"
-         " (the 20 s row: `--long --only long`, continued over sessions from its checkpoints; `prm/bubbling_bed_2d.prm`, 600 cells, unless the case says otherwise;",
+         " (the 20 s row: `--long --only long`, resumable from its checkpoints; `prm/bubbling_bed_2d.prm`, 600 cells, unless the case says otherwise;",
          f"U_mf by Wen–Yu: {u_mf:.3f} m/s for 350 µm, {u_mf_fine:.4f} m/s for 100 µm; runs two at a time on the",
          "2-core machine, so the wall times are upper bounds).", "",
          "| case | outcome | simulated | steps | rejected | α_s range | Θ range (m²/s²) | mass drift | NaN-free | wall s |",
@@ -152,5 +152,5 @@ for r in results:
     lines.append(f"| {r['label']} | {r['outcome']} | {r['reached']:.3g} / {r['end']:g} s | {r['steps']} | {r['rejected']} | "
                  f"[{r['alpha'][0]:.1e}, {r['alpha'][1]:.4f}] | [{r['theta'][0]:.1e}, {r['theta'][1]:.3g}] | {r['drift']:.1e} | "
                  f"{'yes' if r['finite'] else 'NO'} | {r['wall']:.0f} |")
-replace_doc_section(root, "stress", "Stress benchmark (issue 7)", lines)
+replace_doc_section(root, "stress", "Stress benchmark", lines)
 print("\n".join(lines))

@@ -2,8 +2,8 @@
 """Runs a .prm case with wetbed and checks its monitors.csv against physics.
 
 usage: case_checks.py CHECK WETBED SOURCE_DIR WORK_DIR
-CHECK: ergun | hydrostatic | packed | settling | ramp | kinetic | ranks | bubbling | hdf5 |
-       restart | amr | failure
+CHECK: ergun | hydrostatic | packed | settling | ramp | kinetic | ranks | monitor_interval |
+       bubbling | hdf5 | restart | amr | failure | bubbles
 """
 import csv
 import math
@@ -210,6 +210,19 @@ elif check == "ranks":
     worst = max(abs(a["alpha_s_max"] - b["alpha_s_max"]) for a, b in zip(one, two))
     expect(worst < 1e-6, f"max alpha_s agrees (max difference {worst:.1e} < 1e-6)")
     expect(all(abs(a["solids_mass"] - b["solids_mass"]) <= 1e-12 * a["solids_mass"] for a, b in zip(one, two)), "solids mass identical")
+elif check == "monitor_interval":
+    # `output/monitor interval` thins monitors.csv and nothing else: the rows of a run
+    # with interval 3 are those of the every-step run at steps 0, 3, 6, ... and the last
+    # step, identical (the time-step controller reads the fields, not the rows)
+    overrides = "subsection time stepping\n set end time = 0.02\nend\n"
+    every = run("bubbling_bed_2d", overrides, 1, os.path.join(work, "interval_1"))
+    thin = run("bubbling_bed_2d", overrides + "subsection output\n set monitor interval = 3\nend\n",
+               1, os.path.join(work, "interval_3"))
+    steps = [int(r["step"]) for r in every]
+    wanted = [r for r in every if int(r["step"]) % 3 == 0 or int(r["step"]) == steps[-1]]
+    expect(len(every) > 10 and [int(r["step"]) for r in thin] == [int(r["step"]) for r in wanted],
+           f"interval 3: rows at steps {[int(r['step']) for r in thin][:5]}... ({len(thin)} of {len(every)})")
+    expect(all(a == b for a, b in zip(wanted, thin)), "the thinned rows are the every-step rows, bit for bit")
 elif check == "bubbling":
     # the default case, first 0.05 s: runs, bounded, conservative, the bed lifts
     rows = run("bubbling_bed_2d", "subsection time stepping\n set end time = 0.05\nend\n"

@@ -1,6 +1,7 @@
 // T1 (core part): drag laws and the Johnson-Jackson frictional pressure against
-// ../shared/reference/closures_reference.py (values generated with it, rel. 1e-12),
-// and the Sacado derivatives against central finite differences.
+// reference values of the closed-form laws of doc/theory.md ("Closures"), evaluated
+// independently in Python (rel. 1e-12), and the Sacado derivatives against central
+// finite differences.
 #include "test_utilities.h"
 
 #include <wetbed/closures/drag/drag_model.h>
@@ -16,7 +17,7 @@ using testing::check_close;
 int main ()
 {
   const GasParticleProperties air_glass{1.2, 1.8e-5, 350e-6};
-  // alpha_s, slip, Syamlal-O'Brien, Gidaspow, Wen-Yu (closures_reference.py)
+  // alpha_s, slip, Syamlal-O'Brien, Gidaspow, Wen-Yu (Python reference values)
   const std::vector<std::array<double, 5>> drag_reference = {{0.050000000000000003,
                                                               0.29999999999999999,
                                                               277.0862201814827,

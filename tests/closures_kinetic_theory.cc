@@ -1,9 +1,10 @@
 // T1 (kinetic theory): radial distributions, Lun pressure, viscosities, conductivities,
 // dissipation, Johnson-Jackson wall terms, Schaeffer viscosity and the algebraic
-// granular temperature against ../shared/reference/closures_reference.py (values
-// generated with it: 350 um glass, rho_s = 2500, e = 0.9, alpha_max = 0.61, g0 Ogawa,
-// specularity 0.5, e_w = 0.8, u_slip = 0.1 m/s; rel. 1e-12), and every Sacado
-// derivative against a central finite difference.
+// granular temperature against reference values of the closed-form laws of
+// doc/theory.md ("Kinetic-theory closures", "Granular energy", "Johnson-Jackson walls"),
+// evaluated independently in Python (350 um glass, rho_s = 2500, e = 0.9, alpha_max =
+// 0.61, g0 Ogawa, specularity 0.5, e_w = 0.8, u_slip = 0.1 m/s; rel. 1e-12), and every
+// Sacado derivative against a central finite difference.
 #include "test_utilities.h"
 
 #include <wetbed/closures/frictional/schaeffer_viscosity.h>

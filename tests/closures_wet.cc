@@ -10,7 +10,8 @@
 // 0.235785, + 5/6 = 1.069118, sqrt = 1.033982, h = 350e-6 x 0.033982 = 1.18936e-5 m;
 // h_c = 0.5 x 1.0875 x 350e-6 x (0.001 x 2500/969)^(1/3) = 2.61019e-5 m, so h_a < h <=
 // h_c (bridged); sqrt(pi 1e-3) = 0.0560499, P = 9/16 pi 0.4945 x 0.0560499 / 1.18936e-5
-// x (6 x 0.45/pi)^(2/3) = 4118.07 x 0.903950 = 3722.6 Pa (DESIGN s2: "P_wet ~ 3.7 kPa").
+// x (6 x 0.45/pi)^(2/3) = 4118.07 x 0.903950 = 3722.6 Pa (doc/theory.md, "Wet closures":
+// 3.72 kPa).
 #include "test_utilities.h"
 
 #include <wetbed/closures/kinetic_theory/kinetic_theory.h>

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""Reference values of the wet closures (seed 000 s3 as read in DESIGN s2), written from
-the paper's equations independently of the C++ (tests/closures_wet.cc embeds them).
+"""Reference values of the wet closures (seed 000 s3 as read in doc/theory.md, "Wet
+closures"), written from the paper's equations independently of the C++
+(tests/closures_wet.cc embeds them).
 Seed-000 liquid: silicone oil mu_L = 0.4945 Pa s, rho_L = 969, gamma_c = 0.175 rad,
 h_a = 2.8 um; 350 um glass, rho_s = 2500, e_dry = 0.9; c_u = 3/2, phi' = 30 deg;
 delta = 0.1e-2; sigma = 0.021 N/m; film delta_f/d = 0.1; sharp switches (width 0)."""

@@ -18,8 +18,8 @@ using namespace dealii;
  * The granular temperature Theta on the alpha_s space (Q1), after the alpha_s and u_s
  * corrections of an outer iteration.
  *
- * PDE (DESIGN s1), in advective form (the solids continuity times 3/2 rho Theta
- * subtracted):
+ * PDE (doc/theory.md, "Equations" and "Granular energy"), in advective form (the solids
+ * continuity times 3/2 rho Theta subtracted):
  *   3/2 alpha rho (dTheta/dt + u_s.grad Theta) = div(kappa grad Theta)
  *       + 2 mu D:D + (lambda - 2/3 mu)(tr D)^2 - p_hat Theta div u_s
  *       - K_gamma Theta^(3/2) - 3 beta Theta,
@@ -39,8 +39,9 @@ using namespace dealii;
  * alpha_s^2). Johnson- Jackson walls: kappa dTheta/dn = G_w - D_w with G_w = C_JJ
  * |u_slip|^2 explicit.
  *
- * Algebraic: the local equilibrium of closures_reference.py (production = dissipation
- * + drag exchange) at the Gauss points, lumped-L2 projected onto the nodes; no matrix.
+ * Algebraic: the local equilibrium (doc/theory.md, "Granular energy"; production =
+ * dissipation + drag exchange) at the Gauss points, lumped-L2 projected onto the nodes;
+ * no matrix.
  */
 template <int dim>
 bool TwoFluidSolver<dim>::update_granular_temperature (const BDFCoefficients &bdf,
@@ -118,10 +119,7 @@ bool TwoFluidSolver<dim>::update_granular_temperature (const BDFCoefficients &bd
         const SymmetricTensor<2, dim> D        = symmetrize (grad_us[q]);
         const double                  trace_d  = trace (D);
         const double                  d_ddot_d = D * D;
-        const double                  beta =
-            alpha_s > 0
-                                 ? drag->coefficient (alpha_s, (ug[q] - us[q]).norm (), gas_particle)
-                                 : 0.0;
+        const double beta = closure_evaluator.drag (alpha_s, (ug[q] - us[q]).norm ());
         for (unsigned int i = 0; i < n; ++i)
           cell_mass (i) += theta_values.shape_value (i, q) * JxW;
         if (algebraic)

@@ -12,8 +12,9 @@ namespace wetbed
 using namespace dealii;
 
 /**
- * Implicit solids-pressure correction (DESIGN s4.2, the OpenFOAM implicitPhasePressure /
- * MFIX solids-correction idea in increment form). The momentum solve that produced the
+ * Implicit solids-pressure correction (doc/theory.md, "One time step", step 3; the
+ * OpenFOAM implicitPhasePressure / MFIX solids-correction idea in increment form). The
+ * momentum solve that produced the
  * transporting u_s saw -grad P_h(alpha_m), P_h = sum_j P_s(alpha_m,j) phi_j the Q1
  * interpolant of the nodal solids pressure (the well-balanced compaction force). The
  * correction makes the response of exactly that force implicit in the change since then:
@@ -46,8 +47,7 @@ template <int dim>
 double TwoFluidSolver<dim>::compaction_stiffness (const double alpha_s,
                                                   const double alpha_m) const
 {
-  return solids_stress->evaluate ({std::max (alpha_s, alpha_m), 0.0, 0.0})
-      .pressure_derivative;
+  return closure_evaluator.compaction_slope (std::max (alpha_s, alpha_m));
 }
 
 template <int dim>
@@ -79,7 +79,7 @@ double TwoFluidSolver<dim>::compaction_mobility (const double          alpha_s,
     return 0.0;
   const double alpha_g = std::max (1.0 - alpha_s, 1e-6);
   const auto  &pp      = parameters.physical;
-  const double beta    = drag->coefficient (alpha_s, slip.norm (), gas_particle);
+  const double beta    = closure_evaluator.drag (alpha_s, slip.norm ());
   return 1.0 / (rate * (pp.particle_density + alpha_s * pp.gas_density / alpha_g) +
                 beta / (alpha_s * alpha_g * alpha_g));
 }

@@ -21,6 +21,8 @@ void print_usage (std::ostream &out)
          "usage:\n"
          "  wetbed CASE.prm                run the case (mpirun -np N wetbed CASE.prm)\n"
          "  wetbed CASE.prm --resume       continue it from <output folder>/checkpoint\n"
+         "  wetbed CASE.prm --threads N    N threads per rank for the flow assembly "
+         "(default 1)\n"
          "  wetbed --print-parameters      every parameter with default and "
          "documentation\n"
          "  wetbed closures CASE.prm [--alpha-s A,..] [--theta T,..] [--shear-rate "
@@ -95,6 +97,37 @@ int run_case (const Parameters &parameters, const dealii::ParameterHandler &prm)
   return solver.run () == TwoFluidSolver<dim>::RunEnd::finished ? 0 : 4;
 }
 } // namespace
+
+unsigned int take_threads_option (int &argc, char **argv)
+{
+  unsigned int threads = 1;
+  for (int i = 1; i < argc; ++i)
+  {
+    if (std::string (argv[i]) != "--threads")
+      continue;
+    require (i + 1 < argc, "--threads", "needs a value");
+    const std::string value = argv[i + 1];
+    std::size_t       end   = 0;
+    long              n     = 0;
+    try
+    {
+      n = std::stol (value, &end);
+    }
+    catch (const std::logic_error &)
+    {
+      end = 0;
+    }
+    require (end == value.size () && n >= 1 && n <= 1024,
+             "--threads",
+             "'" + value + "' is not a thread count (an integer >= 1)");
+    threads = static_cast<unsigned int> (n);
+    for (int j = i; j + 2 <= argc; ++j)
+      argv[j] = argv[j + 2];
+    argc -= 2;
+    --i;
+  }
+  return threads;
+}
 
 int run_application (int argc, char **argv)
 {

@@ -335,7 +335,11 @@ void OutputParameters::declare_parameters (ParameterHandler &prm)
                      Double (0),
                      "Simulated seconds between field outputs (0: first and last only).");
   prm.declare_entry (
-      "monitor interval", "1", Integer (1), "Steps between monitors.csv rows.");
+      "monitor interval",
+      "1",
+      Integer (1),
+      "Steps between monitors.csv rows (and a row after the last step); the "
+      "spectra are computed from these rows.");
   prm.declare_entry (
       "progress interval", "20", Integer (1), "Steps between progress lines.");
   prm.declare_entry (

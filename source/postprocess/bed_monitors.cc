@@ -99,39 +99,10 @@ MonitorRow TwoFluidSolver<dim>::evaluate_monitors () const
   row.alpha_min = Utilities::MPI::min (lo, communicator);
   row.alpha_max = Utilities::MPI::max (hi, communicator);
 
-  // peak speeds: gas at every Q2 node, solids at the vertices where alpha_s > 1e-3
-  // (u_s has no meaning where there are no solids)
-  std::vector<types::global_dof_index> dofs (flow_fe.n_dofs_per_cell ()),
-      alpha_cell_dofs (alpha_fe.n_dofs_per_cell ());
-  double gas_speed = 0, solids_speed = 0;
-  auto   alpha_cell = alpha_dof_handler.begin_active ();
-  for (const auto &cell : flow_dof_handler.active_cell_iterators ())
-  {
-    if (cell->is_locally_owned ())
-    {
-      cell->get_dof_indices (dofs);
-      alpha_cell->get_dof_indices (alpha_cell_dofs);
-      for (unsigned int node = 0; node < flow_fe.base_element (0).n_dofs_per_cell ();
-           ++node)
-      {
-        double g2 = 0, s2 = 0;
-        for (unsigned int d = 0; d < dim; ++d)
-        {
-          g2 += std::pow (
-              flow_solution (dofs[flow_fe.component_to_system_index (d, node)]), 2);
-          s2 += std::pow (
-              flow_solution (dofs[flow_fe.component_to_system_index (dim + d, node)]), 2);
-        }
-        gas_speed = std::max (gas_speed, std::sqrt (g2));
-        if (node < GeometryInfo<dim>::vertices_per_cell &&
-            alpha (alpha_cell_dofs[node]) > 1e-3)
-          solids_speed = std::max (solids_speed, std::sqrt (s2));
-      }
-    }
-    ++alpha_cell;
-  }
-  row.gas_speed_max    = Utilities::MPI::max (gas_speed, communicator);
-  row.solids_speed_max = Utilities::MPI::max (solids_speed, communicator);
+  const WaveSpeeds speeds  = evaluate_wave_speeds ();
+  row.gas_speed_max        = speeds.gas;
+  row.solids_speed_max     = speeds.solids;
+  row.granular_sound_speed = speeds.granular_sound;
 
   // bed height: 95% of the solids lie below it (nodal masses sorted by height)
   const Tensor<1, dim>                   up = upward_direction<dim> (pp.gravity);
@@ -165,28 +136,18 @@ MonitorRow TwoFluidSolver<dim>::evaluate_monitors () const
   // granular temperature: extremes over the nodes, mean weighted by the solids mass
   if (kinetic_theory)
   {
-    double lo = std::numeric_limits<double>::max (), hi = 0, weighted = 0, weight = 0,
-           sound = 0;
+    double lo = std::numeric_limits<double>::max (), hi = 0, weighted = 0, weight = 0;
     for (unsigned int i = 0; i < theta.locally_owned_size (); ++i)
     {
-      // the kinetic pressure is explicit in the step: its wave speed
-      // sqrt(dP/d(alpha rho)) ~ sqrt(2 P_kin / (alpha_s rho_s)) enters the CFL limit
-      const double a = std::max (alpha.local_element (i), 0.0);
-      if (a > 1e-3)
-        sound =
-            std::max (sound,
-                      std::sqrt (2.0 * kinetic_theory->evaluate (a, 1.0).pressure_factor *
-                                 theta.local_element (i) / (a * pp.particle_density)));
       lo             = std::min (lo, theta.local_element (i));
       hi             = std::max (hi, theta.local_element (i));
       const double m = mass.local_element (i) * alpha.local_element (i);
       weighted += m * theta.local_element (i);
       weight += m;
     }
-    row.theta_min            = Utilities::MPI::min (lo, communicator);
-    row.theta_max            = Utilities::MPI::max (hi, communicator);
-    row.granular_sound_speed = Utilities::MPI::max (sound, communicator);
-    weight                   = Utilities::MPI::sum (weight, communicator);
+    row.theta_min = Utilities::MPI::min (lo, communicator);
+    row.theta_max = Utilities::MPI::max (hi, communicator);
+    weight        = Utilities::MPI::sum (weight, communicator);
     row.theta_mean =
         weight > 0 ? Utilities::MPI::sum (weighted, communicator) / weight : 0;
     row.granular_energy = granular_energy_budget;

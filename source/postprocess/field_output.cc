@@ -46,7 +46,7 @@ void TwoFluidSolver<dim>::write_fields () const
   AlphaVector solids_pressure (alpha);
   for (unsigned int i = 0; i < solids_pressure.locally_owned_size (); ++i)
     solids_pressure.local_element (i) =
-        solids_stress->evaluate ({alpha.local_element (i), 0.0, 0.0}).pressure;
+        closure_evaluator.compaction_pressure (alpha.local_element (i));
   solids_pressure.update_ghost_values ();
   data_out.add_data_vector (alpha_dof_handler, solids_pressure, "solids_pressure");
   if (kinetic_theory)
@@ -90,14 +90,12 @@ void TwoFluidSolver<dim>::write_fields () const
       std::fill (split_integral.begin (), split_integral.end (), 0.0);
       for (unsigned int q = 0; q < quadrature.size (); ++q)
       {
-        const SymmetricTensor<2, dim> deviator =
-            deviator_tensor<dim> () * symmetrize (grad_u_s[q]);
-        const double shear_rate = std::sqrt (2.0 * deviator * deviator);
-        const double a          = std::max (alpha_q[q], 0.0);
-        const auto   stress     = solids_stress->evaluate ({a, theta_q[q], shear_rate});
-        const double JxW        = flow_values.JxW (q);
-        integral +=
-            drag->coefficient (alpha_q[q], (u_g[q] - u_s[q]).norm (), gas_particle) * JxW;
+        const double shear_rate =
+            closures::ClosureEvaluator::shear_rate<dim> (grad_u_s[q]);
+        const double a      = std::max (alpha_q[q], 0.0);
+        const auto   stress = closure_evaluator.stress (a, theta_q[q], shear_rate);
+        const double JxW    = flow_values.JxW (q);
+        integral += closure_evaluator.drag (a, (u_g[q] - u_s[q]).norm ()) * JxW;
         viscosity += stress.shear_viscosity * JxW;
         volume += JxW;
         if (kinetic_theory)

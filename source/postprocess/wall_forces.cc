@@ -76,14 +76,12 @@ TwoFluidSolver<dim>::evaluate_wall_forces () const
         alpha_values.get_function_values (theta, theta_q);
         for (unsigned int q = 0; q < quadrature.size (); ++q)
         {
-          const Tensor<1, dim>          n   = flow_values.normal_vector (q);
-          const double                  JxW = flow_values.JxW (q);
-          const double                  a_s = std::max (a[q], 0.0);
-          const SymmetricTensor<2, dim> deviator =
-              deviator_tensor<dim> () * symmetrize (grad_u_s[q]);
-          const closures::SolidsStress stress = solids_stress->evaluate (
-              {a_s, theta_q[q], std::sqrt (2.0 * deviator * deviator)});
-          // MFIX convention: mu_s, lambda_s carry alpha_s (DESIGN s2)
+          const Tensor<1, dim>         n      = flow_values.normal_vector (q);
+          const double                 JxW    = flow_values.JxW (q);
+          const double                 a_s    = std::max (a[q], 0.0);
+          const closures::SolidsStress stress = closure_evaluator.stress (
+              a_s, theta_q[q], closures::ClosureEvaluator::shear_rate<dim> (grad_u_s[q]));
+          // MFIX convention: mu_s, lambda_s carry alpha_s (doc/theory.md, "Conventions")
           const Tensor<2, dim> tau_s =
               viscous (grad_u_s[q], stress.shear_viscosity, stress.bulk_viscosity);
           if (inlet || outlet)

@@ -181,7 +181,7 @@ void TwoFluidSolver<dim>::adapt_mesh ()
   for (unsigned int k = 0; k < 3; ++k)
     restore_solids_mass (*scalars[k], masses[k], candidate);
   // the AMG hierarchy belongs to the old mesh
-  solves_since_build = std::numeric_limits<unsigned int>::max () / 2;
+  flow_linear_solver.reset ();
 }
 
 template <int dim>

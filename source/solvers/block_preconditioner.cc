@@ -10,6 +10,26 @@ BlockPreconditioner::BlockPreconditioner (const LinearSolverParameters &paramete
 {
 }
 
+void BlockPreconditioner::set_near_null_space (std::vector<std::vector<double>> vectors,
+                                               const unsigned int dofs_per_velocity_node)
+{
+  modes         = std::move (vectors);
+  dofs_per_node = dofs_per_velocity_node;
+}
+
+void BlockPreconditioner::update (const FlowOperator &op, const bool rebuild_velocity)
+{
+  const auto *assembled = dynamic_cast<const AssembledFlowOperator *> (&op);
+  if (assembled == nullptr)
+    throw std::logic_error ("the block AMG preconditioner needs the assembled flow "
+                            "operator, not '" +
+                            op.name () + "'");
+  gradient = &assembled->gradient_block ();
+  if (rebuild_velocity)
+    build_velocity (assembled->velocity_block (), modes, dofs_per_node);
+  build_schur (assembled->schur_block ());
+}
+
 void BlockPreconditioner::build_velocity (
     const dealii::TrilinosWrappers::SparseMatrix &A,
     const std::vector<std::vector<double>>       &near_null_space,

@@ -1,6 +1,7 @@
 #include <wetbed/core/input_error.h>
 #include <wetbed/mesh/cell_weights.h>
 #include <wetbed/solvers/two_fluid_solver.h>
+#include <wetbed/solvers/velocity_near_null_space.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature.h>
@@ -71,19 +72,16 @@ void TwoFluidSolver<dim>::setup_dofs ()
     DoFTools::make_sparsity_pattern (
         flow_dof_handler, coupling, dsp, flow_constraints, false);
     SparsityTools::distribute_sparsity_pattern (dsp, owned, communicator, relevant);
-    flow_matrix.reinit (flow_owned, dsp, communicator);
-  }
-  {
-    Table<2, DoFTools::Coupling> coupling (2 * dim + 1, 2 * dim + 1);
+    Table<2, DoFTools::Coupling> schur_coupling (2 * dim + 1, 2 * dim + 1);
     for (unsigned int c = 0; c < 2 * dim + 1; ++c)
       for (unsigned int d = 0; d < 2 * dim + 1; ++d)
-        coupling[c][d] =
+        schur_coupling[c][d] =
             (c == 2 * dim && d == 2 * dim) ? DoFTools::always : DoFTools::none;
-    BlockDynamicSparsityPattern dsp (flow_relevant);
+    BlockDynamicSparsityPattern schur_dsp (flow_relevant);
     DoFTools::make_sparsity_pattern (
-        flow_dof_handler, coupling, dsp, schur_constraints, false);
-    SparsityTools::distribute_sparsity_pattern (dsp, owned, communicator, relevant);
-    schur_matrix.reinit (flow_owned, dsp, communicator);
+        flow_dof_handler, schur_coupling, schur_dsp, schur_constraints, false);
+    SparsityTools::distribute_sparsity_pattern (schur_dsp, owned, communicator, relevant);
+    flow_operator.reinit (flow_owned, dsp, schur_dsp, communicator);
   }
   {
     std::vector<bool> velocity (2 * dim + 1, true);
@@ -121,7 +119,16 @@ void TwoFluidSolver<dim>::setup_dofs ()
   preconditioner = std::make_unique<BlockPreconditioner> (parameters.linear_solver);
   preconditioner->velocity_builds = velocity_builds;
   preconditioner->schur_builds    = schur_builds;
-  preconditioner->set_coupling (flow_matrix.block (0, 1));
+  {
+    VelocityNearNullSpace space =
+        velocity_near_null_space (mapping,
+                                  flow_dof_handler,
+                                  flow_owned[0],
+                                  parameters.linear_solver.rotation_modes,
+                                  communicator);
+    preconditioner->set_near_null_space (std::move (space.modes), space.dofs_per_node);
+  }
+  flow_linear_solver.reset ();
 
   double               h = std::numeric_limits<double>::max (), normal_motion = 0;
   const Tensor<1, dim> wall_motion = moving_wall_velocity ();

@@ -116,10 +116,8 @@ std::string TwoFluidSolver<dim>::describe_failed_state (const double dt) const
          << at (global_extreme (us, 1, communicator), dim, " m/s") << " (cell centres)\n";
   if (std::isfinite (worst_alpha[0]))
   {
-    const auto stress = solids_stress->evaluate (
-        {std::min (worst_alpha[0], parameters.physical.maximum_packing),
-         std::max (theta_there, 0.0),
-         0.0});
+    const auto stress = closure_evaluator.stress (
+        std::min (worst_alpha[0], parameters.physical.maximum_packing), theta_there, 0.0);
     report << "closures at the alpha_s max node (Theta " << theta_there
            << ", zero shear): P_s " << stress.pressure << " Pa, dP_s/dalpha "
            << stress.pressure_derivative << " Pa, mu_s " << stress.shear_viscosity

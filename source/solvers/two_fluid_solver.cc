@@ -44,7 +44,13 @@ TwoFluidSolver<dim>::TwoFluidSolver (const Parameters &parameters, MPI_Comm comm
       gas_particle{parameters.physical.gas_density,
                    parameters.physical.gas_viscosity,
                    parameters.physical.particle_diameter},
-      time (0), time_step (parameters.time.initial_time_step), previous_time_step (0),
+      closure_evaluator (*drag,
+                         *solids_stress,
+                         gas_particle,
+                         parameters.physical.residual_solids_fraction),
+      flow_linear_solver (parameters.linear_solver, pcout, timer),
+      time_step_controller (parameters.time), time (0),
+      time_step (parameters.time.initial_time_step), previous_time_step (0),
       step_number (0), rejected_steps (0), last_krylov_iterations (0),
       next_output_time (0), output_index (0), initial_solids_mass (0),
       min_node_spacing (0)
@@ -67,6 +73,7 @@ void TwoFluidSolver<dim>::set_manufactured_solution (
     std::shared_ptr<ManufacturedSolution<dim>> m)
 {
   manufactured = m;
+  flow_assembler.reset (); // the manufactured sources join the terms
 }
 
 template <int dim>
@@ -269,9 +276,8 @@ TwoFluidSolver<dim>::hydrostatic_profile (const std::vector<double> &heights) co
   const auto  &pp       = parameters.physical;
   const auto  &ic       = parameters.initial;
   const double weight   = (pp.particle_density - pp.gas_density) * pp.gravity.norm ();
-  auto         pressure = [&] (const double a) {
-    return solids_stress->evaluate ({a, 0.0, 0.0}).pressure;
-  };
+  auto         pressure = [&] (const double a)
+  { return closure_evaluator.compaction_pressure (a); };
   const double tolerance = 1e-9 * std::max (ic.bed_height, 1e-12);
   std::vector<std::pair<double, double>> profile; // (height, alpha), top down
   double                                 alpha_above = -1, z_above = 0;
@@ -424,14 +430,16 @@ bool TwoFluidSolver<dim>::try_time_step (const double dt, const unsigned int bdf
 template <int dim>
 double TwoFluidSolver<dim>::next_time_step (const double dt) const
 {
-  const auto &ts = parameters.time;
-  if (!ts.adaptive)
+  if (!parameters.time.adaptive)
     return dt;
-  const MonitorRow &row   = monitors.last ();
-  const double      speed = std::max (
-      {row.solids_speed_max, 0.25 * row.gas_speed_max, row.granular_sound_speed, 1e-12});
-  const double cfl_dt = ts.cfl_target * min_node_spacing / speed;
-  return std::min ({ts.maximum_time_step, ts.growth_factor * dt, cfl_dt});
+  return time_step_controller.next (dt, evaluate_wave_speeds (), min_node_spacing);
+}
+
+template <int dim>
+void TwoFluidSolver<dim>::record_monitors ()
+{
+  TimerOutput::Scope scope (timer, "monitors");
+  monitors.add (evaluate_monitors ());
 }
 
 template <int dim>
@@ -501,10 +509,9 @@ void TwoFluidSolver<dim>::advance ()
   time += dt;
   previous_time_step = dt;
   ++step_number;
-  {
-    TimerOutput::Scope scope (timer, "monitors");
-    monitors.add (evaluate_monitors ());
-  }
+  const bool last_step = time >= parameters.time.end_time * (1 - 1e-12);
+  if (step_number % parameters.output.monitor_interval == 0 || last_step)
+    record_monitors ();
   time_step = next_time_step (dt);
 }
 
@@ -519,11 +526,7 @@ typename TwoFluidSolver<dim>::RunEnd TwoFluidSolver<dim>::run ()
   const unsigned int first_step = step_number;
   if (!resumed)
   {
-    {
-      TimerOutput::Scope scope (timer, "monitors");
-      MonitorRow         row = evaluate_monitors ();
-      monitors.add (row);
-    }
+    record_monitors ();
     analyse_bubbles ();
     if (parameters.output.field_interval >= 0)
       write_fields ();

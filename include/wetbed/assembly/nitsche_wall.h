@@ -10,8 +10,9 @@
 namespace wetbed
 {
 /**
- * Weak no-penetration u_k.n = 0 on a slip wall by symmetric Nitsche (numerics.md s4,
- * Urquiza-Garon-Farinas 2014), for each phase k that slips there:
+ * Weak no-penetration u_k.n = 0 on a slip wall by symmetric Nitsche (doc/theory.md,
+ * "No penetration by symmetric Nitsche"; Urquiza-Garon-Farinas 2014), for each phase k
+ * that slips there:
  *   - int (n.sigma_k(u_k, p) n)(v_k.n) - int (n.tau_k(v_k) n)(u_k.n)
  *   + int gamma mu*_k / h (u_k.n)(v_k.n)
  * with sigma_k = tau_k - alpha_k p I - P_k I, tau_k = 2 mu_k D + b_k (div u) I, and the

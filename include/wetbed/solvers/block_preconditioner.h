@@ -1,6 +1,7 @@
 #pragma once
 
 #include <wetbed/core/parameters.h>
+#include <wetbed/solvers/assembled_flow_operator.h>
 
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_block_sparse_matrix.h>
@@ -16,7 +17,8 @@
 namespace wetbed
 {
 /**
- * Block upper-triangular preconditioner for [[A, B^T], [B, 0]] (DESIGN s5):
+ * Block upper-triangular preconditioner for [[A, B^T], [B, 0]] (doc/theory.md,
+ * "Block preconditioner"):
  *   y_p = -L_c^{-1} r_p,   y_u = A^{-1} (r_u - B^T y_p),
  * A^{-1}: one ML V-cycle on both velocities (2 dim constant modes), L_c^{-1}: one
  * smoothed-aggregation V-cycle on the partial-elimination mobility Laplacian. With
@@ -24,12 +26,17 @@ namespace wetbed
  * 1e-10 (diagnosis: the FGMRES count is then that of the Schur approximation alone).
  * With `inner solves = exact velocity` only the velocity solve is direct.
  */
-class BlockPreconditioner
+class BlockPreconditioner : public FlowPreconditioner
 {
 public:
-  using BlockVector = dealii::TrilinosWrappers::MPI::BlockVector;
-
   BlockPreconditioner (const LinearSolverParameters &parameters);
+
+  /** The near-null space of the velocity block on this mesh (see build_velocity). */
+  void set_near_null_space (std::vector<std::vector<double>> modes,
+                            unsigned int                     dofs_per_node);
+  /** From an AssembledFlowOperator (the only operator it is made for): the Schur
+   * hierarchy always, the velocity hierarchy with `rebuild_velocity`. */
+  void update (const FlowOperator &op, bool rebuild_velocity) override;
 
   /** Builds (or rebuilds) the velocity hierarchy from the current A with the given
    * near-null space: one vector per mode, each with the locally owned velocity rows in
@@ -41,12 +48,8 @@ public:
                        unsigned int                                  dofs_per_node);
   /** Builds the Schur hierarchy from L_c. */
   void build_schur (const dealii::TrilinosWrappers::SparseMatrix &schur_matrix);
-  void set_coupling (const dealii::TrilinosWrappers::SparseMatrix &gradient_block)
-  {
-    gradient = &gradient_block;
-  }
 
-  void vmult (BlockVector &dst, const BlockVector &src) const;
+  void vmult (BlockVector &dst, const BlockVector &src) const override;
 
   unsigned int velocity_builds = 0, schur_builds = 0;
 
@@ -61,5 +64,7 @@ private:
   mutable std::unique_ptr<dealii::TrilinosWrappers::SolverDirect> velocity_direct;
   mutable dealii::TrilinosWrappers::MPI::Vector                   velocity_tmp;
   std::unique_ptr<Epetra_MultiVector> null_space; // ML keeps a pointer to its values
+  std::vector<std::vector<double>>    modes;
+  unsigned int                        dofs_per_node = 1;
 };
 } // namespace wetbed

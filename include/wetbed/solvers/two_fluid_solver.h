@@ -1,6 +1,8 @@
 #pragma once
 
+#include <wetbed/assembly/flow/flow_assembler.h>
 #include <wetbed/assembly/volume_fraction_transport.h>
+#include <wetbed/closures/closure_evaluator.h>
 #include <wetbed/closures/drag/drag_model.h>
 #include <wetbed/closures/kinetic_theory/kinetic_theory.h>
 #include <wetbed/closures/solids_stress/solids_stress_model.h>
@@ -12,8 +14,11 @@
 #include <wetbed/mesh/partition_independent_triangulation.h>
 #include <wetbed/postprocess/bubble_analysis.h>
 #include <wetbed/postprocess/monitors.h>
+#include <wetbed/solvers/assembled_flow_operator.h>
 #include <wetbed/solvers/block_preconditioner.h>
+#include <wetbed/solvers/flow_linear_solver.h>
 #include <wetbed/solvers/solve_history.h>
+#include <wetbed/solvers/time_step_controller.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/data_out_base.h>
@@ -127,11 +132,18 @@ private:
                             double                   target,
                             const std::vector<bool> &candidate) const;
   /** Mesh, fields and time-stepping state from the checkpoint (checkpoint.cc). */
-  void   resume_from_checkpoint ();
-  bool   try_time_step (double dt, unsigned int bdf_order);
+  void resume_from_checkpoint ();
+  bool try_time_step (double dt, unsigned int bdf_order);
+  /** The next step after one of length dt (TimeStepController, on this state). */
   double next_time_step (double dt) const;
+  /** The peak speeds of the current state (source/solvers/wave_speeds.cc). */
+  WaveSpeeds evaluate_wave_speeds () const;
+  /** Adds a monitors.csv row of the current state (every `monitor interval` steps). */
+  void record_monitors ();
 
   // assembly (source/assembly/)
+  /** The flow terms of this case, once the mesh's boundaries are known. */
+  void   setup_flow_assembler ();
   void   assemble_flow_system (const BDFCoefficients &bdf, double dt);
   double compaction_stiffness (double alpha_s, double alpha_m) const;
   /** alpha_s/R: the solids volume flux a unit compaction force gradient drives. */
@@ -162,9 +174,8 @@ private:
   // equilibrium projected onto the nodes; false if the solve failed
   bool update_granular_temperature (const BDFCoefficients &bdf, double dt);
 
-  // linear solve (source/solvers/flow_linear_solve.cc)
+  // linear solve (source/solvers/flow_solve.cc)
   unsigned int solve_flow_system (double dt);
-  void         build_velocity_preconditioner (double dt);
 
   // postprocessing (source/postprocess/)
   MonitorRow evaluate_monitors () const;
@@ -243,8 +254,8 @@ private:
   // hanging nodes of the alpha_s/Theta space (empty on uniform meshes)
   dealii::AffineConstraints<double> alpha_constraints;
 
-  dealii::TrilinosWrappers::BlockSparseMatrix flow_matrix, schur_matrix;
-  BlockVector                                 flow_rhs;
+  AssembledFlowOperator flow_operator; // with the Schur mobility Laplacian
+  BlockVector           flow_rhs;
   // flow solutions (ghosted): current iterate, t_n, t_{n-1}
   BlockVector flow_solution, flow_old, flow_old2;
 
@@ -256,12 +267,16 @@ private:
   std::unique_ptr<closures::SolidsStressModel> solids_stress;
   const closures::KineticTheory               *kinetic_theory; // null without KTGF
   closures::GasParticleProperties              gas_particle;
+  closures::ClosureEvaluator                   closure_evaluator;
   mutable dealii::FunctionParser<1>            inlet_velocity_function;
   dealii::FunctionParser<3> held_velocity_function{3}; // u_s(x, y, z, t) where held
   std::shared_ptr<ManufacturedSolution<dim>> manufactured;
 
   VolumeFractionTransport<dim>         transport;
   std::unique_ptr<BlockPreconditioner> preconditioner;
+  std::unique_ptr<FlowAssembler<dim>>  flow_assembler;
+  FlowLinearSolver                     flow_linear_solver;
+  TimeStepController                   time_step_controller;
   // compaction correction: M_L + dt K diag(P'_j) (solved) and dt K (the edge fluxes)
   dealii::TrilinosWrappers::SparseMatrix correction_matrix, compaction_flux_matrix;
   dealii::TrilinosWrappers::SparseMatrix granular_energy_matrix; // PDE model only
@@ -272,16 +287,8 @@ private:
   // the volume fraction and flow state the last flow assembly linearised about
   AlphaVector assembled_alpha;
   BlockVector assembled_flow;
-  // for the consistent boundary reactions: on each cell of the last flow assembly that
-  // holds velocity DoFs on the inlet, the walls or the outlet (b = 0, 1, 2; a DoF on
-  // two: the first), the sum of its unconstrained rows of boundary b weighted by the
-  // component of -g/|g| along each DoF's direction, w_b^T K (row[b]) and w_b^T f (rhs[b])
-  struct BoundaryCellSystem
-  {
-    std::vector<dealii::types::global_dof_index> dofs;
-    std::array<std::vector<double>, 3>           row;
-    std::array<double, 3>                        rhs;
-  };
+  // for the consistent boundary reactions: the weighted boundary rows of the cells of
+  // the last flow assembly (FlowAssembler::BoundaryRowCapture)
   std::vector<BoundaryCellSystem> boundary_cell_systems;
   std::array<dealii::IndexSet, 3> boundary_velocity_dofs;
 
@@ -295,13 +302,9 @@ private:
   mutable std::vector<dealii::XDMFEntry> xdmf_entries;
   double                                 initial_solids_mass;
   double                                 min_node_spacing;
-  // velocity AMG reuse: solves since the last build, iterations right after it
-  unsigned int solves_since_build     = std::numeric_limits<unsigned int>::max () / 2;
-  unsigned int iterations_after_build = 0;
-  double       dt_at_build            = 1.0;
-  bool         initialized            = false;
-  bool         resumed                = false; // the state came from a checkpoint
-  std::string  rejection_reason;               // why the last attempted step was rejected
-  SolveHistory solve_history;                  // the linear solves of the current step
+  bool                                   initialized = false;
+  bool         resumed = false;  // the state came from a checkpoint
+  std::string  rejection_reason; // why the last attempted step was rejected
+  SolveHistory solve_history;    // the linear solves of the current step
 };
 } // namespace wetbed

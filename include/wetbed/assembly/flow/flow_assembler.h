@@ -1,0 +1,80 @@
+#pragma once
+
+#include <wetbed/assembly/flow/flow_term.h>
+#include <wetbed/solvers/assembled_flow_operator.h>
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/lac/affine_constraints.h>
+
+#include <memory>
+#include <vector>
+
+namespace wetbed
+{
+/**
+ * Assembles the Oseen-linearised two-fluid system at t_{n+1} (doc/theory.md, "Discrete
+ * flow system") from a list of terms, cell by cell on threads (WorkStream): for each
+ * cell the fields and, once, every closure at the quadrature points (ClosureEvaluator)
+ * go into the scratch, then each term adds its part to the local system, and the copier
+ * distributes it into the assembled operator (the system and the Schur mobility
+ * Laplacian) and the right-hand side.
+ */
+template <int dim>
+class FlowAssembler
+{
+public:
+  using BlockVector = dealii::TrilinosWrappers::MPI::BlockVector;
+
+  FlowAssembler (const dealii::Mapping<dim>       &mapping,
+                 const dealii::DoFHandler<dim>    &flow_dof_handler,
+                 const dealii::DoFHandler<dim>    &alpha_dof_handler,
+                 const closures::ClosureEvaluator &closures,
+                 const FlowMaterial<dim>          &material);
+
+  void add_term (std::unique_ptr<FlowTerm<dim>> term);
+  /** The names of the terms, in the order they are applied. */
+  std::vector<std::string> term_names () const;
+
+  /** Where the boundary rows of the momentum budget are captured: the velocity DoFs of
+   * the inlet, the walls and the outlet, and the upward direction. */
+  struct BoundaryRowCapture
+  {
+    const std::array<dealii::IndexSet, 3> *velocity_dofs;
+    dealii::Tensor<1, dim>                 up;
+    std::vector<BoundaryCellSystem>       *systems;
+  };
+
+  void assemble (const FlowAssemblyState<dim>            &state,
+                 const dealii::AffineConstraints<double> &flow_constraints,
+                 const dealii::AffineConstraints<double> &schur_constraints,
+                 AssembledFlowOperator                   &flow_operator,
+                 BlockVector                             &rhs,
+                 const BoundaryRowCapture                &capture) const;
+
+private:
+  using CellIterator = typename dealii::DoFHandler<dim>::active_cell_iterator;
+
+  /** The fields, the closures and the shared point quantities of a cell. */
+  void prepare_cell (const CellIterator           &cell,
+                     const FlowAssemblyState<dim> &state,
+                     FlowCellScratch<dim>         &scratch) const;
+  /** The fields at the points of one boundary face. */
+  void        prepare_face (const CellIterator           &cell,
+                            unsigned int                  face,
+                            const FlowAssemblyState<dim> &state,
+                            FlowCellScratch<dim>         &scratch) const;
+  void        local_system (const CellIterator           &cell,
+                            const FlowAssemblyState<dim> &state,
+                            FlowCellScratch<dim>         &scratch,
+                            FlowCellCopy                 &copy) const;
+  static void capture_boundary_rows (const FlowCellCopy              &copy,
+                                     const std::vector<unsigned int> &component,
+                                     const BoundaryRowCapture        &capture);
+
+  const dealii::Mapping<dim>                 &mapping;
+  const dealii::DoFHandler<dim>              &flow_dof_handler, &alpha_dof_handler;
+  const closures::ClosureEvaluator           &evaluator;
+  FlowMaterial<dim>                           material;
+  std::vector<std::unique_ptr<FlowTerm<dim>>> terms;
+};
+} // namespace wetbed

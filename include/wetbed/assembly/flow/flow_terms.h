@@ -1,0 +1,33 @@
+#pragma once
+
+#include <wetbed/assembly/flow/flow_assembler.h>
+#include <wetbed/core/parameters.h>
+#include <wetbed/mesh/mesh_input.h>
+
+namespace wetbed
+{
+/** What the choice of the flow terms depends on besides the parameters. */
+template <int dim>
+struct FlowTermContext
+{
+  const Parameters                 *parameters;
+  BoundaryIds                       boundary_ids;
+  const closures::ClosureEvaluator *closures;
+  FlowMaterial<dim>                 material;
+  dealii::Tensor<1, dim>            moving_wall_velocity;
+  unsigned int                      velocity_degree;
+  // verification runs keep the wall conditions only with slip walls (else exact values)
+  bool slip_walls = true;
+};
+
+/**
+ * Adds the terms of the flow system this case needs, chosen from the parameters (as
+ * Lethe's setup_assemblers): inertia, drag coupling, viscous stress, convection (with
+ * streamline diffusion where stabilized), the pressure couplings, the body force and
+ * the Schur mobility in the volume; on the boundary wall friction (partial slip or
+ * Johnson-Jackson), Nitsche no-penetration and the outlet backflow where they apply. A
+ * new term: one class deriving from FlowTerm and one line here.
+ */
+template <int dim>
+void add_flow_terms (FlowAssembler<dim> &assembler, const FlowTermContext<dim> &context);
+} // namespace wetbed

@@ -1,0 +1,32 @@
+#pragma once
+
+#include <wetbed/assembly/flow/flow_term.h>
+
+namespace wetbed
+{
+/** Directional do-nothing on the outlet: gas flowing back in is treated as inflow,
+ * rho_g |u_g.n|_- u_g.v (alpha_g ~ 1 in the freeboard). */
+template <int dim>
+class OutletBackflowTerm : public FlowTerm<dim>
+{
+public:
+  OutletBackflowTerm (dealii::types::boundary_id outlet, double gas_density)
+      : outlet (outlet), gas_density (gas_density)
+  {
+  }
+  std::string name () const override { return "outlet backflow"; }
+  bool        acts_on_boundary (dealii::types::boundary_id id) const override
+  {
+    return id == outlet;
+  }
+  void face (const typename FlowTerm<dim>::CellIterator &cell,
+             unsigned int                                face_number,
+             const FlowCellScratch<dim>                 &scratch,
+             const FlowAssemblyState<dim>               &state,
+             FlowCellCopy                               &copy) const override;
+
+private:
+  dealii::types::boundary_id outlet;
+  double                     gas_density;
+};
+} // namespace wetbed

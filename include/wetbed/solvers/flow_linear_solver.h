@@ -1,0 +1,55 @@
+#pragma once
+
+#include <wetbed/core/parameters.h>
+#include <wetbed/solvers/flow_operator.h>
+#include <wetbed/solvers/solve_history.h>
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/lac/affine_constraints.h>
+
+#include <limits>
+
+namespace wetbed
+{
+/**
+ * FGMRES on the monolithic (u_g, u_s, p') system with a flow preconditioner, and the
+ * policy of when the preconditioner's expensive (velocity) part is rebuilt: after
+ * `rebuild interval` solves, when dt changed by more than 20%, or when the iterations
+ * grew beyond `rebuild growth` times those right after its build. A solve with a
+ * reused velocity part gets at most 3x those iterations (+10): if it misses that, the
+ * part is rebuilt and the same solve is repeated, so reuse never costs a rejected step.
+ */
+class FlowLinearSolver
+{
+public:
+  using BlockVector = FlowOperator::BlockVector;
+
+  FlowLinearSolver (const LinearSolverParameters &parameters,
+                    dealii::ConditionalOStream   &pcout,
+                    dealii::TimerOutput          &timer);
+
+  /** Rebuild everything at the next solve (after a mesh change). */
+  void reset () { solves_since_build = std::numeric_limits<unsigned int>::max () / 2; }
+
+  /** Solves A x = rhs; `solution` holds the initial guess on entry (owned layout,
+   * constrained entries zero) and the solution on exit (constraints not distributed).
+   * Returns the iterations, or invalid_unsigned_int when the solve failed with a fresh
+   * preconditioner (the step is then rejected). */
+  unsigned int solve (const FlowOperator &op,
+                      FlowPreconditioner &preconditioner,
+                      const BlockVector  &rhs,
+                      BlockVector        &solution,
+                      double              dt,
+                      SolveHistory       &history);
+
+private:
+  const LinearSolverParameters &parameters;
+  dealii::ConditionalOStream   &pcout;
+  dealii::TimerOutput          &timer;
+  // solves since the last velocity build, iterations right after it, its dt
+  unsigned int solves_since_build     = std::numeric_limits<unsigned int>::max () / 2;
+  unsigned int iterations_after_build = 0;
+  double       dt_at_build            = 1.0;
+};
+} // namespace wetbed

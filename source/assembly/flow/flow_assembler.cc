@@ -1,0 +1,230 @@
+#include <wetbed/assembly/flow/flow_assembler.h>
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/work_stream.h>
+#include <deal.II/grid/filtered_iterator.h>
+
+namespace wetbed
+{
+using namespace dealii;
+
+template <int dim>
+FlowAssembler<dim>::FlowAssembler (const Mapping<dim>               &mapping,
+                                   const DoFHandler<dim>            &flow_dof_handler,
+                                   const DoFHandler<dim>            &alpha_dof_handler,
+                                   const closures::ClosureEvaluator &closures,
+                                   const FlowMaterial<dim>          &material)
+    : mapping (mapping), flow_dof_handler (flow_dof_handler),
+      alpha_dof_handler (alpha_dof_handler), evaluator (closures), material (material)
+{
+}
+
+template <int dim>
+void FlowAssembler<dim>::add_term (std::unique_ptr<FlowTerm<dim>> term)
+{
+  terms.push_back (std::move (term));
+}
+
+template <int dim>
+std::vector<std::string> FlowAssembler<dim>::term_names () const
+{
+  std::vector<std::string> names;
+  for (const auto &term : terms)
+    names.push_back (term->name ());
+  return names;
+}
+
+template <int dim>
+void FlowAssembler<dim>::prepare_cell (const CellIterator           &cell,
+                                       const FlowAssemblyState<dim> &state,
+                                       FlowCellScratch<dim>         &s) const
+{
+  const CellIterator alpha_cell (
+      &cell->get_triangulation (), cell->level (), cell->index (), &alpha_dof_handler);
+  s.fe_values.reinit (cell);
+  s.alpha_values.reinit (alpha_cell);
+  const FEValuesExtractors::Vector velocity[2] = {FEValuesExtractors::Vector (0),
+                                                  FEValuesExtractors::Vector (dim)};
+  s.alpha_values.get_function_values (*state.alpha, s.alpha_s);
+  s.alpha_values.get_function_gradients (*state.alpha, s.grad_alpha_s);
+  s.alpha_values.get_function_values (*state.alpha_old, s.alpha_s_old);
+  s.alpha_values.get_function_values (*state.alpha_old2, s.alpha_s_old2);
+  s.alpha_values.get_function_values (*state.theta, s.theta);
+  for (unsigned int k = 0; k < 2; ++k)
+  {
+    s.fe_values[velocity[k]].get_function_values (*state.flow, s.u[k]);
+    s.fe_values[velocity[k]].get_function_gradients (*state.flow, s.grad_u[k]);
+    s.fe_values[velocity[k]].get_function_values (*state.flow_old, s.u_old[k]);
+    s.fe_values[velocity[k]].get_function_values (*state.flow_old2, s.u_old2[k]);
+  }
+  const unsigned int n_q = s.JxW.size ();
+  for (unsigned int q = 0; q < n_q; ++q)
+  {
+    s.JxW[q]  = s.fe_values.JxW (q);
+    s.slip[q] = (s.u[0][q] - s.u[1][q]).norm ();
+    for (unsigned int a = 0; a < s.indices.n_velocity_basis; ++a)
+    {
+      const unsigned int i = s.indices.velocity[0][a];
+      s.phi[q][a]          = s.fe_values.shape_value (i, q);
+      s.grad_phi[q][a]     = s.fe_values.shape_grad (i, q);
+    }
+    for (unsigned int b = 0; b < s.indices.n_pressure_basis; ++b)
+    {
+      const unsigned int i = s.indices.pressure[b];
+      s.phi_p[q][b]        = s.fe_values.shape_value (i, q);
+      s.grad_phi_p[q][b]   = s.fe_values.shape_grad (i, q);
+    }
+  }
+  // every closure, once per quadrature point (and P_s at the alpha_s nodes)
+  alpha_cell->get_dof_values (*state.alpha, s.alpha_nodal);
+  s.closures.template evaluate<dim> (
+      evaluator, s.alpha_s, s.theta, s.slip, s.grad_u[1], s.alpha_nodal);
+
+  const double rho_g = material.gas_density, mu_g = material.gas_viscosity;
+  double       volume = 0, alpha_integral = 0;
+  for (unsigned int q = 0; q < n_q; ++q)
+  {
+    s.compaction_pressure[q] = 0;
+    for (unsigned int j = 0; j < s.alpha_nodal.size (); ++j)
+      s.compaction_pressure[q] +=
+          s.closures.nodal_compaction_pressure[j] * s.alpha_values.shape_value (j, q);
+    volume += s.JxW[q];
+    alpha_integral += s.alpha_s[q] * s.JxW[q];
+    const double alpha_g = 1.0 - s.alpha_s[q];
+    s.fraction[0][q]     = alpha_g;
+    s.fraction[1][q]     = s.alpha_s[q];
+    s.inertia[0][q]      = alpha_g * rho_g;
+    s.inertia[1][q]      = s.closures.inertial_fraction[q] * material.particle_density;
+    s.viscosity[0][q]    = alpha_g * mu_g;
+    s.viscosity[1][q]    = s.closures.shear_viscosity[q];
+    s.bulk[0][q]         = -2.0 / 3.0 * alpha_g * mu_g;
+    s.bulk[1][q] =
+        s.closures.bulk_viscosity[q] - 2.0 / 3.0 * s.closures.shear_viscosity[q];
+    for (unsigned int k = 0; k < 2; ++k)
+      s.bdf_mass[k][q] = state.bdf.a0 * s.inertia[k][q] / state.dt;
+  }
+  s.alpha_mean = alpha_integral / volume;
+  s.h          = cell->diameter () / std::sqrt (double (dim));
+}
+
+template <int dim>
+void FlowAssembler<dim>::prepare_face (const CellIterator           &cell,
+                                       const unsigned int            face,
+                                       const FlowAssemblyState<dim> &state,
+                                       FlowCellScratch<dim>         &s) const
+{
+  const CellIterator alpha_cell (
+      &cell->get_triangulation (), cell->level (), cell->index (), &alpha_dof_handler);
+  s.face_number = face;
+  s.face_values.reinit (cell, face);
+  s.alpha_face_values.reinit (alpha_cell, face);
+  const FEValuesExtractors::Vector gas (0), solids (dim);
+  s.face_values[gas].get_function_values (*state.flow, s.face_u[0]);
+  s.face_values[solids].get_function_values (*state.flow, s.face_u[1]);
+  s.face_values[solids].get_function_gradients (*state.flow, s.face_grad_u_s);
+  s.alpha_face_values.get_function_values (*state.alpha, s.face_alpha_s);
+  s.alpha_face_values.get_function_values (*state.theta, s.face_theta);
+}
+
+template <int dim>
+void FlowAssembler<dim>::local_system (const CellIterator           &cell,
+                                       const FlowAssemblyState<dim> &state,
+                                       FlowCellScratch<dim>         &scratch,
+                                       FlowCellCopy                 &copy) const
+{
+  copy.matrix = 0;
+  copy.schur  = 0;
+  copy.rhs    = 0;
+  cell->get_dof_indices (copy.dofs);
+  prepare_cell (cell, state, scratch);
+  for (const auto &term : terms)
+    term->cell (scratch, state, copy);
+  for (const unsigned int f : cell->face_indices ())
+  {
+    if (!cell->face (f)->at_boundary ())
+      continue;
+    const auto id     = cell->face (f)->boundary_id ();
+    bool       needed = false;
+    for (const auto &term : terms)
+      needed = needed || term->acts_on_boundary (id);
+    if (!needed)
+      continue;
+    prepare_face (cell, f, state, scratch);
+    for (const auto &term : terms)
+      if (term->acts_on_boundary (id))
+        term->face (cell, f, scratch, state, copy);
+  }
+  copy.captured = cell->at_boundary ();
+}
+
+template <int dim>
+void FlowAssembler<dim>::capture_boundary_rows (
+    const FlowCellCopy              &copy,
+    const std::vector<unsigned int> &component,
+    const BoundaryRowCapture        &capture)
+{
+  const unsigned int n_dofs = copy.dofs.size ();
+  BoundaryCellSystem system{copy.dofs, {}, {{0, 0, 0}}};
+  bool               any = false;
+  for (unsigned int i = 0; i < n_dofs; ++i)
+    for (unsigned int b = 0; b < 3 && component[i] < 2 * dim; ++b)
+      if ((*capture.velocity_dofs)[b].is_element (copy.dofs[i]))
+      {
+        const double weight = capture.up[component[i] % dim];
+        if (weight != 0)
+        {
+          system.row[b].resize (n_dofs, 0.0);
+          for (unsigned int j = 0; j < n_dofs; ++j)
+            system.row[b][j] += weight * copy.matrix (i, j);
+          system.rhs[b] += weight * copy.rhs (i);
+          any = true;
+        }
+        break;
+      }
+  if (any)
+    capture.systems->push_back (std::move (system));
+}
+
+template <int dim>
+void FlowAssembler<dim>::assemble (const FlowAssemblyState<dim>    &state,
+                                   const AffineConstraints<double> &flow_constraints,
+                                   const AffineConstraints<double> &schur_constraints,
+                                   AssembledFlowOperator           &flow_operator,
+                                   BlockVector                     &rhs,
+                                   const BoundaryRowCapture        &capture) const
+{
+  flow_operator.system = 0;
+  flow_operator.schur  = 0;
+  rhs                  = 0;
+  capture.systems->clear ();
+  const auto &fe = dynamic_cast<const FESystem<dim> &> (flow_dof_handler.get_fe ());
+  const FlowCellScratch<dim> scratch (
+      mapping, fe, alpha_dof_handler.get_fe (), QGauss<dim> (3), QGauss<dim - 1> (3));
+  const FlowCellCopy               copy (fe.n_dofs_per_cell ());
+  const std::vector<unsigned int> &component = scratch.indices.component;
+
+  using Filtered = FilteredIterator<CellIterator>;
+  WorkStream::run (
+      Filtered (IteratorFilters::LocallyOwnedCell (), flow_dof_handler.begin_active ()),
+      Filtered (IteratorFilters::LocallyOwnedCell (), flow_dof_handler.end ()),
+      [&] (const Filtered &cell, FlowCellScratch<dim> &s, FlowCellCopy &c)
+      { local_system (cell, state, s, c); },
+      [&] (const FlowCellCopy &c)
+      {
+        if (c.captured)
+          capture_boundary_rows (c, component, capture);
+        flow_constraints.distribute_local_to_global (
+            c.matrix, c.rhs, c.dofs, flow_operator.system, rhs);
+        schur_constraints.distribute_local_to_global (
+            c.schur, c.dofs, flow_operator.schur);
+      },
+      scratch,
+      copy);
+  flow_operator.system.compress (VectorOperation::add);
+  flow_operator.schur.compress (VectorOperation::add);
+  rhs.compress (VectorOperation::add);
+}
+
+template class FlowAssembler<2>;
+template class FlowAssembler<3>;
+} // namespace wetbed

@@ -1,0 +1,59 @@
+#include <wetbed/assembly/flow/body_force_term.h>
+#include <wetbed/assembly/flow/convection_term.h>
+#include <wetbed/assembly/flow/drag_coupling_term.h>
+#include <wetbed/assembly/flow/flow_terms.h>
+#include <wetbed/assembly/flow/inertia_term.h>
+#include <wetbed/assembly/flow/nitsche_wall_term.h>
+#include <wetbed/assembly/flow/outlet_backflow_term.h>
+#include <wetbed/assembly/flow/pressure_coupling_term.h>
+#include <wetbed/assembly/flow/schur_mobility_term.h>
+#include <wetbed/assembly/flow/viscous_term.h>
+#include <wetbed/assembly/flow/wall_friction_term.h>
+
+#include <cmath>
+
+namespace wetbed
+{
+template <int dim>
+void add_flow_terms (FlowAssembler<dim> &assembler, const FlowTermContext<dim> &context)
+{
+  const Parameters  &p  = *context.parameters;
+  const auto        &bc = p.boundary;
+  const BoundaryIds &id = context.boundary_ids;
+  const auto        &m  = context.material;
+
+  assembler.add_term (std::make_unique<InertiaTerm<dim>> (m, p.conservative_momentum));
+  assembler.add_term (std::make_unique<DragCouplingTerm<dim>> ());
+  assembler.add_term (std::make_unique<ViscousTerm<dim>> ());
+  assembler.add_term (std::make_unique<ConvectionTerm<dim>> (p.stabilization));
+  assembler.add_term (std::make_unique<PressureCouplingTerm<dim>> ());
+  assembler.add_term (std::make_unique<BodyForceTerm<dim>> (m));
+  assembler.add_term (std::make_unique<SchurMobilityTerm<dim>> (m));
+
+  const bool johnson_jackson = bc.solids_wall == WallCondition::johnson_jackson;
+  if ((bc.solids_wall == WallCondition::partial_slip || johnson_jackson) &&
+      context.slip_walls)
+    assembler.add_term (std::make_unique<WallFrictionTerm<dim>> (
+        id.walls (),
+        id.moving_wall,
+        context.moving_wall_velocity,
+        bc.solids_wall_friction,
+        johnson_jackson ? context.closures->kinetic_theory () : nullptr));
+  const std::array<bool, 2> nitsche = {
+      context.slip_walls && bc.nitsche && bc.gas_wall != WallCondition::no_slip,
+      context.slip_walls && bc.nitsche && bc.solids_wall != WallCondition::no_slip};
+  if (nitsche[0] || nitsche[1])
+    assembler.add_term (std::make_unique<NitscheWallTerm<dim>> (
+        id.walls (),
+        nitsche,
+        bc.nitsche_penalty * std::pow (context.velocity_degree + 1.0, 2),
+        m,
+        *context.closures));
+  if (p.stabilization)
+    assembler.add_term (
+        std::make_unique<OutletBackflowTerm<dim>> (id.outlet, m.gas_density));
+}
+
+template void add_flow_terms (FlowAssembler<2> &, const FlowTermContext<2> &);
+template void add_flow_terms (FlowAssembler<3> &, const FlowTermContext<3> &);
+} // namespace wetbed

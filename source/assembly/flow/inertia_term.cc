@@ -1,0 +1,53 @@
+#include <wetbed/assembly/flow/inertia_term.h>
+#include <wetbed/assembly/inertial_fraction.h>
+
+namespace wetbed
+{
+template <int dim>
+void InertiaTerm<dim>::cell (const FlowCellScratch<dim>   &s,
+                             const FlowAssemblyState<dim> &state,
+                             FlowCellCopy                 &copy) const
+{
+  const auto        &bdf = state.bdf;
+  const double       dt = state.dt, residual = material.residual_solids_fraction;
+  const double       density[2] = {material.gas_density, material.particle_density};
+  const unsigned int n_u        = s.indices.n_velocity_basis;
+  for (unsigned int q = 0; q < s.JxW.size (); ++q)
+  {
+    const double w = s.JxW[q];
+    for (unsigned int k = 0; k < 2; ++k)
+    {
+      double                 history[2]      = {s.inertia[k][q], s.inertia[k][q]};
+      double                 continuity_mass = 0;
+      dealii::Tensor<1, dim> force;
+      if (conservative)
+      {
+        history[0] = inertial_fraction (k, s.alpha_s_old[q], residual) * density[k];
+        history[1] = inertial_fraction (k, s.alpha_s_old2[q], residual) * density[k];
+        const double divergence = inertial_flux_divergence<dim> (
+            k, s.alpha_s[q], s.grad_alpha_s[q], s.u[k][q], s.grad_u[k][q], residual);
+        continuity_mass = density[k] * std::max (divergence, 0.0);
+        force           = -density[k] * std::min (divergence, 0.0) * s.u[k][q];
+      }
+      force -=
+          (bdf.a1 * history[0] * s.u_old[k][q] + bdf.a2 * history[1] * s.u_old2[k][q]) /
+          dt;
+      const double mass = s.bdf_mass[k][q] + continuity_mass;
+      for (unsigned int d = 0; d < dim; ++d)
+      {
+        const auto &rows = s.indices.velocity[k * dim + d];
+        for (unsigned int a = 0; a < n_u; ++a)
+        {
+          const double phi_a = s.phi[q][a] * w;
+          copy.rhs (rows[a]) += force[d] * phi_a;
+          for (unsigned int b = 0; b < n_u; ++b)
+            copy.matrix (rows[a], rows[b]) += mass * phi_a * s.phi[q][b];
+        }
+      }
+    }
+  }
+}
+
+template class InertiaTerm<2>;
+template class InertiaTerm<3>;
+} // namespace wetbed

@@ -1,0 +1,54 @@
+#include <wetbed/assembly/flow/wall_friction_term.h>
+
+namespace wetbed
+{
+template <int dim>
+void WallFrictionTerm<dim>::face (const typename FlowTerm<dim>::CellIterator &cell,
+                                  const unsigned int                          face_number,
+                                  const FlowCellScratch<dim>                 &s,
+                                  const FlowAssemblyState<dim> &,
+                                  FlowCellCopy &copy) const
+{
+  const auto        &fv     = s.face_values;
+  const unsigned int n_u    = s.indices.n_velocity_basis;
+  const bool         moving = cell->face (face_number)->boundary_id () == moving_wall;
+  const auto        &first  = s.indices.velocity[0];
+  for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
+  {
+    const dealii::Tensor<1, dim> n = fv.normal_vector (q);
+    double                       c = friction;
+    if (kinetic_theory)
+    {
+      const double a = std::max (s.face_alpha_s[q], 0.0);
+      c              = kinetic_theory->wall ().shear_coefficient (
+          a, kinetic_theory->radial_distribution (a), std::max (s.face_theta[q], 0.0));
+    }
+    // the slip is relative to a moving wall: C P_t (u - u_w), P_t u_w on the rhs
+    dealii::Tensor<1, dim> wall_motion;
+    if (moving)
+      wall_motion = wall_velocity - (wall_velocity * n) * n;
+    const double w = c * fv.JxW (q);
+    for (unsigned int d = 0; d < dim; ++d)
+    {
+      const auto &rows = s.indices.velocity[dim + d];
+      for (unsigned int a = 0; a < n_u; ++a)
+      {
+        const double phi_a = fv.shape_value (first[a], q) * w;
+        copy.rhs (rows[a]) += wall_motion[d] * phi_a;
+        for (unsigned int e = 0; e < dim; ++e)
+        {
+          // C (P_t u).(P_t v) with P_t = I - n n
+          const double projector = (d == e ? 1.0 : 0.0) - n[d] * n[e];
+          const auto  &cols      = s.indices.velocity[dim + e];
+          for (unsigned int b = 0; b < n_u; ++b)
+            copy.matrix (rows[a], cols[b]) +=
+                projector * phi_a * fv.shape_value (first[b], q);
+        }
+      }
+    }
+  }
+}
+
+template class WallFrictionTerm<2>;
+template class WallFrictionTerm<3>;
+} // namespace wetbed

@@ -1,0 +1,90 @@
+#include <wetbed/solvers/flow_linear_solver.h>
+
+#include <deal.II/lac/solver_gmres.h>
+
+namespace wetbed
+{
+using namespace dealii;
+
+FlowLinearSolver::FlowLinearSolver (const LinearSolverParameters &parameters,
+                                    ConditionalOStream           &pcout,
+                                    TimerOutput                  &timer)
+    : parameters (parameters), pcout (pcout), timer (timer)
+{
+}
+
+unsigned int FlowLinearSolver::solve (const FlowOperator &op,
+                                      FlowPreconditioner &preconditioner,
+                                      const BlockVector  &rhs,
+                                      BlockVector        &solution,
+                                      const double        dt,
+                                      SolveHistory       &history)
+{
+  const auto &ls               = parameters;
+  auto        rebuild_velocity = [&] ()
+  {
+    preconditioner.update (op, true);
+    solves_since_build     = 0;
+    iterations_after_build = 0;
+    dt_at_build            = dt;
+  };
+  {
+    TimerOutput::Scope scope (timer, "preconditioner setup");
+    if (solves_since_build >= ls.rebuild_interval ||
+        std::abs (dt / dt_at_build - 1.0) > 0.2)
+      rebuild_velocity ();
+    else
+      preconditioner.update (op, false);
+  }
+
+  const double      target        = ls.relative_tolerance * rhs.l2_norm ();
+  const BlockVector initial_guess = solution;
+  unsigned int      spent         = 0;
+  for (unsigned int attempt = 0; attempt < 2; ++attempt)
+  {
+    const bool         reused = solves_since_build > 0;
+    const unsigned int limit =
+        reused ? std::min (ls.maximum_iterations, 3 * iterations_after_build + 10)
+               : ls.maximum_iterations;
+    TimerOutput::Scope scope (timer, "Krylov solve");
+    solution = initial_guess;
+    SolverControl control (limit, std::max (target, 1e-300));
+    control.enable_history_data ();
+    SolverFGMRES<BlockVector> fgmres (
+        control, typename SolverFGMRES<BlockVector>::AdditionalData (ls.restart));
+    try
+    {
+      fgmres.solve (op, solution, rhs, preconditioner);
+    }
+    catch (const SolverControl::NoConvergence &)
+    {
+      history.record (
+          reused ? "flow FGMRES (reused AMG)" : "flow FGMRES", control, false);
+      spent += control.last_step ();
+      if (reused)
+      {
+        TimerOutput::Scope setup (timer, "preconditioner setup");
+        rebuild_velocity ();
+        continue;
+      }
+      solves_since_build = ls.rebuild_interval;
+      pcout << "  FGMRES did not converge in " << control.last_step ()
+            << " iterations (residual " << control.last_value () << ", target " << target
+            << ")" << std::endl;
+      return numbers::invalid_unsigned_int;
+    }
+    const unsigned int iterations = control.last_step ();
+    history.record (reused ? "flow FGMRES (reused AMG)" : "flow FGMRES", control, true);
+    if (ls.verbose)
+      pcout << "    FGMRES " << iterations << " iterations"
+            << (reused ? " (reused AMG)" : "") << std::endl;
+    ++solves_since_build;
+    if (iterations_after_build == 0)
+      iterations_after_build = std::max (1u, iterations);
+    else if (iterations > ls.rebuild_growth * iterations_after_build)
+      solves_since_build = ls.rebuild_interval;
+    return iterations + spent;
+  }
+  return numbers::invalid_unsigned_int;
+}
+} // namespace wetbed
