@@ -158,6 +158,13 @@ for args, expected_code in ((["--help"], 0), (["--print-parameters"], 0), ([], 1
     p = subprocess.run([wetbed] + args, capture_output=True, text=True)
     if p.returncode != expected_code:
         failures.append(f"wetbed {' '.join(args)}: exit {p.returncode}, expected {expected_code}")
+# --threads N (threads per rank): anything but an integer >= 1 exits 2 naming it
+for args in (["--threads", "0"], ["--threads", "two"], ["--threads", "2.5"], ["--threads"]):
+    p = subprocess.run([wetbed, os.path.join(source, "prm", "bubbling_bed_2d.prm")] + args,
+                       capture_output=True, text=True)
+    message = p.stderr.strip().splitlines()[-1] if p.stderr.strip() else ""
+    if p.returncode != 2 or not message.startswith("wetbed: error: --threads"):
+        failures.append(f"wetbed CASE {' '.join(args)}: exit {p.returncode}, message '{message}'")
 
 # 4. wetbed closures: the wet case reports the regimes; bad options exit 2 naming them
 wet_case = os.path.join(work, "wet_closures.prm")

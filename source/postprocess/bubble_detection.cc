@@ -65,28 +65,46 @@ enum Field : unsigned int
   cells     = freeboard + 1,
   stride    = cells + 1
 };
-} // namespace
 
+/** The gas cells among the owned and ghost cells, by active cell index. */
 template <int dim>
-BubbleField detect_bubbles (const Mapping<dim>                               &mapping,
-                            const DoFHandler<dim>                            &dof_handler,
-                            const LinearAlgebra::distributed::Vector<double> &alpha_s,
-                            const BubbleCriteria                             &criteria,
-                            MPI_Comm communicator)
+struct GasCells
 {
-  const auto        &triangulation = dof_handler.get_triangulation ();
-  const unsigned int n_cells       = triangulation.n_active_cells ();
+  std::vector<char>       gas;         // mean alpha_g above the threshold
+  std::vector<double>     cell_volume; // of every owned and ghost cell
+  std::vector<Point<dim>> cell_moment; // first moment of every owned and ghost cell
+};
 
-  // 1. gas cells among the owned and ghost cells: volume, first moment
-  const QGauss<dim>       quadrature (2);
-  FEValues<dim>           values (mapping,
+/** The global labels of the components. */
+struct ComponentLabels
+{
+  // by active cell index: of the owned and ghost gas cells, else invalid
+  std::vector<unsigned long long> cell_label;
+  // this rank's components are labels offset, ..., offset + n_local - 1
+  unsigned long long n_local, offset;
+};
+
+/** The gas cells among the owned and ghost cells, their volume and first moment. */
+template <int dim>
+GasCells<dim> find_gas_cells (const Mapping<dim>    &mapping,
+                              const DoFHandler<dim> &dof_handler,
+                              const LinearAlgebra::distributed::Vector<double> &alpha_s,
+                              const BubbleCriteria                             &criteria)
+{
+  const unsigned int       n_cells = dof_handler.get_triangulation ().n_active_cells ();
+  const QGauss<dim>        quadrature (2);
+  FEValues<dim>            values (mapping,
                         dof_handler.get_fe (),
                         quadrature,
                         update_values | update_JxW_values | update_quadrature_points);
-  std::vector<double>     a_q (quadrature.size ());
-  std::vector<char>       gas (n_cells, 0);
-  std::vector<double>     cell_volume (n_cells, 0.0);
-  std::vector<Point<dim>> cell_moment (n_cells);
+  std::vector<double>      a_q (quadrature.size ());
+  GasCells<dim>            cells_of_gas;
+  std::vector<char>       &gas         = cells_of_gas.gas;
+  std::vector<double>     &cell_volume = cells_of_gas.cell_volume;
+  std::vector<Point<dim>> &cell_moment = cells_of_gas.cell_moment;
+  gas.assign (n_cells, 0);
+  cell_volume.assign (n_cells, 0.0);
+  cell_moment.resize (n_cells);
   for (const auto &cell : dof_handler.active_cell_iterators ())
     if (!cell->is_artificial ())
     {
@@ -103,9 +121,15 @@ BubbleField detect_bubbles (const Mapping<dim>                               &ma
       cell_volume[cell->active_cell_index ()] = v;
       gas[cell->active_cell_index ()] = gas_volume > criteria.gas_fraction_threshold * v;
     }
+  return cells_of_gas;
+}
 
-  // 2. local components of the owned gas cells; links to ghost gas cells
-  DisjointSets                                       local (n_cells);
+/** Joins the owned gas cells in `local` into components; returns the links to ghost
+ * gas cells. */
+template <int dim>
+std::vector<std::pair<unsigned int, unsigned int>> join_local_components (
+    const DoFHandler<dim> &dof_handler, const std::vector<char> &gas, DisjointSets &local)
+{
   std::vector<std::pair<unsigned int, unsigned int>> ghost_links; // (owned, ghost) cells
   const auto visit_neighbor = [&] (const auto &cell, const auto &neighbor)
   {
@@ -129,21 +153,34 @@ BubbleField detect_bubbles (const Mapping<dim>                               &ma
         else
           visit_neighbor (cell, cell->neighbor (f));
       }
+  return ghost_links;
+}
 
-  // 3. global labels: the local roots numbered after those of the lower ranks
+/** Global labels: the local roots numbered after those of the lower ranks, handed to
+ * the ranks that see their cells as ghosts. */
+template <int dim>
+ComponentLabels label_components (const DoFHandler<dim>   &dof_handler,
+                                  const std::vector<char> &gas,
+                                  DisjointSets            &local,
+                                  MPI_Comm                 communicator)
+{
   std::map<std::size_t, unsigned long long> root_index;
   for (const auto &cell : dof_handler.active_cell_iterators ())
     if (cell->is_locally_owned () && gas[cell->active_cell_index ()])
       root_index.emplace (local.find (cell->active_cell_index ()), root_index.size ());
-  unsigned long long n_local = root_index.size (), offset = 0;
-  MPI_Exscan (&n_local, &offset, 1, MPI_UNSIGNED_LONG_LONG, MPI_SUM, communicator);
+  ComponentLabels labels;
+  labels.n_local = root_index.size ();
+  labels.offset  = 0;
+  MPI_Exscan (
+      &labels.n_local, &labels.offset, 1, MPI_UNSIGNED_LONG_LONG, MPI_SUM, communicator);
   if (Utilities::MPI::this_mpi_process (communicator) == 0)
-    offset = 0;
-  std::vector<unsigned long long> cell_label (n_cells, numbers::invalid_dof_index);
+    labels.offset = 0;
+  std::vector<unsigned long long> &cell_label = labels.cell_label;
+  cell_label.assign (gas.size (), numbers::invalid_dof_index);
   for (const auto &cell : dof_handler.active_cell_iterators ())
     if (cell->is_locally_owned () && gas[cell->active_cell_index ()])
       cell_label[cell->active_cell_index ()] =
-          offset + root_index[local.find (cell->active_cell_index ())];
+          labels.offset + root_index[local.find (cell->active_cell_index ())];
   using CellIterator = typename DoFHandler<dim>::active_cell_iterator;
   GridTools::exchange_cell_data_to_ghosts<unsigned long long, DoFHandler<dim>> (
       dof_handler,
@@ -155,9 +192,19 @@ BubbleField detect_bubbles (const Mapping<dim>                               &ma
       },
       [&] (const CellIterator &cell, const unsigned long long &value)
       { cell_label[cell->active_cell_index ()] = value; });
+  return labels;
+}
 
-  // 4. partial statistics of the local components, and the cross-rank links
-  std::vector<double> partial (n_local * stride, 0.0);
+/** The partial statistics of the local components, `stride` entries each, in label
+ * order. */
+template <int dim>
+std::vector<double> partial_statistics (const DoFHandler<dim> &dof_handler,
+                                        const GasCells<dim>   &cells_of_gas,
+                                        const ComponentLabels &labels,
+                                        const BubbleCriteria  &criteria)
+{
+  const unsigned long long n_local = labels.n_local, offset = labels.offset;
+  std::vector<double>      partial (n_local * stride, 0.0);
   for (unsigned long long c = 0; c < n_local; ++c)
   {
     partial[c * stride + label] = offset + c;
@@ -168,14 +215,14 @@ BubbleField detect_bubbles (const Mapping<dim>                               &ma
     }
   }
   for (const auto &cell : dof_handler.active_cell_iterators ())
-    if (cell->is_locally_owned () && gas[cell->active_cell_index ()])
+    if (cell->is_locally_owned () && cells_of_gas.gas[cell->active_cell_index ()])
     {
       const unsigned int i = cell->active_cell_index ();
-      double            *s = &partial[(cell_label[i] - offset) * stride];
-      s[volume] += cell_volume[i];
+      double            *s = &partial[(labels.cell_label[i] - offset) * stride];
+      s[volume] += cells_of_gas.cell_volume[i];
       s[cells] += 1;
       for (unsigned int d = 0; d < dim; ++d)
-        s[moment + d] += cell_moment[i][d];
+        s[moment + d] += cells_of_gas.cell_moment[i][d];
       for (const unsigned int v : cell->vertex_indices ())
         for (unsigned int d = 0; d < dim; ++d)
         {
@@ -192,6 +239,14 @@ BubbleField detect_bubbles (const Mapping<dim>                               &ma
             s[wall] = 1;
         }
     }
+  return partial;
+}
+
+/** The cross-rank links: the label pairs of the links to labelled ghost cells. */
+std::vector<unsigned long long>
+cross_rank_links (const std::vector<std::pair<unsigned int, unsigned int>> &ghost_links,
+                  const std::vector<unsigned long long>                    &cell_label)
+{
   std::vector<unsigned long long> links;
   for (const auto &link : ghost_links)
     if (cell_label[link.second] != numbers::invalid_dof_index)
@@ -199,19 +254,25 @@ BubbleField detect_bubbles (const Mapping<dim>                               &ma
       links.push_back (cell_label[link.first]);
       links.push_back (cell_label[link.second]);
     }
+  return links;
+}
 
-  // 5. merge on every rank (component data, not cell data)
-  std::vector<double>             all_partial;
-  std::vector<unsigned long long> all_links;
-  for (const auto &part : Utilities::MPI::all_gather (communicator, partial))
-    all_partial.insert (all_partial.end (), part.begin (), part.end ());
-  for (const auto &part : Utilities::MPI::all_gather (communicator, links))
-    all_links.insert (all_links.end (), part.begin (), part.end ());
-  const std::size_t n_global = all_partial.size () / stride;
-  DisjointSets      global (n_global);
-  for (std::size_t k = 0; k + 1 < all_links.size (); k += 2)
-    global.join (all_links[k], all_links[k + 1]);
-  // (the gathered components are in label order: label c is entry c)
+/** Every rank's `local`, concatenated in rank order, on every rank. */
+template <typename T>
+std::vector<T> gather_on_all_ranks (const std::vector<T> &local, MPI_Comm communicator)
+{
+  std::vector<T> all;
+  for (const auto &part : Utilities::MPI::all_gather (communicator, local))
+    all.insert (all.end (), part.begin (), part.end ());
+  return all;
+}
+
+/** The statistics of the merged components, each at the entry of its root in `global`
+ * (the gathered components are in label order: label c is entry c). */
+std::vector<double> merge_statistics (const std::vector<double> &all_partial,
+                                      DisjointSets              &global)
+{
+  const std::size_t   n_global = all_partial.size () / stride;
   std::vector<double> merged (n_global * stride, 0.0);
   for (std::size_t c = 0; c < n_global; ++c)
     for (unsigned int d = 0; d < 3; ++d)
@@ -235,8 +296,18 @@ BubbleField detect_bubbles (const Mapping<dim>                               &ma
     m[wall]      = std::max (m[wall], p[wall]);
     m[freeboard] = std::max (m[freeboard], p[freeboard]);
   }
+  return merged;
+}
 
-  // 6. the bubbles: roots that are not the freeboard and not too small
+/** The bubbles, each with its root: roots that are not the freeboard and not too
+ * small, sorted by height then x. */
+template <int dim>
+std::vector<std::pair<Bubble, std::size_t>>
+find_bubbles (const std::vector<double> &merged,
+              DisjointSets              &global,
+              const BubbleCriteria      &criteria)
+{
+  const std::size_t                           n_global = merged.size () / stride;
   std::vector<std::pair<Bubble, std::size_t>> found;
   for (std::size_t r = 0; r < n_global; ++r)
   {
@@ -266,6 +337,51 @@ BubbleField detect_bubbles (const Mapping<dim>                               &ma
                return std::make_pair (a.first.centroid[dim - 1], a.first.centroid[0]) <
                       std::make_pair (b.first.centroid[dim - 1], b.first.centroid[0]);
              });
+  return found;
+}
+} // namespace
+
+template <int dim>
+BubbleField detect_bubbles (const Mapping<dim>                               &mapping,
+                            const DoFHandler<dim>                            &dof_handler,
+                            const LinearAlgebra::distributed::Vector<double> &alpha_s,
+                            const BubbleCriteria                             &criteria,
+                            MPI_Comm communicator)
+{
+  const unsigned int n_cells = dof_handler.get_triangulation ().n_active_cells ();
+
+  // 1. gas cells among the owned and ghost cells: volume, first moment
+  const GasCells<dim> cells_of_gas =
+      find_gas_cells (mapping, dof_handler, alpha_s, criteria);
+  const std::vector<char> &gas = cells_of_gas.gas;
+
+  // 2. local components of the owned gas cells; links to ghost gas cells
+  DisjointSets local (n_cells);
+  const auto   ghost_links = join_local_components (dof_handler, gas, local);
+
+  // 3. global labels: the local roots numbered after those of the lower ranks
+  const ComponentLabels labels = label_components (dof_handler, gas, local, communicator);
+  const std::vector<unsigned long long> &cell_label = labels.cell_label;
+
+  // 4. partial statistics of the local components, and the cross-rank links
+  const std::vector<double> partial =
+      partial_statistics (dof_handler, cells_of_gas, labels, criteria);
+  const std::vector<unsigned long long> links =
+      cross_rank_links (ghost_links, cell_label);
+
+  // 5. merge on every rank (component data, not cell data)
+  const std::vector<double> all_partial = gather_on_all_ranks (partial, communicator);
+  const std::vector<unsigned long long> all_links =
+      gather_on_all_ranks (links, communicator);
+  const std::size_t n_global = all_partial.size () / stride;
+  DisjointSets      global (n_global);
+  for (std::size_t k = 0; k + 1 < all_links.size (); k += 2)
+    global.join (all_links[k], all_links[k + 1]);
+  const std::vector<double> merged = merge_statistics (all_partial, global);
+
+  // 6. the bubbles: roots that are not the freeboard and not too small
+  const std::vector<std::pair<Bubble, std::size_t>> found =
+      find_bubbles<dim> (merged, global, criteria);
   std::vector<int> index_of_root (n_global, -1);
   BubbleField      field;
   for (const auto &f : found)

@@ -112,6 +112,14 @@ void TwoFluidSolver<dim>::setup_dofs ()
       granular_energy_matrix.reinit (alpha_owned, alpha_owned, dsp, communicator);
   }
 
+  reset_flow_preconditioner ();
+  measure_mesh ();
+  report_mesh (dofs_per_block);
+}
+
+template <int dim>
+void TwoFluidSolver<dim>::reset_flow_preconditioner ()
+{
   // a new mesh needs new hierarchies; the build counts go on
   const unsigned int velocity_builds =
       preconditioner ? preconditioner->velocity_builds : 0;
@@ -129,7 +137,11 @@ void TwoFluidSolver<dim>::setup_dofs ()
     preconditioner->set_near_null_space (std::move (space.modes), space.dofs_per_node);
   }
   flow_linear_solver.reset ();
+}
 
+template <int dim>
+void TwoFluidSolver<dim>::measure_mesh ()
+{
   double               h = std::numeric_limits<double>::max (), normal_motion = 0;
   const Tensor<1, dim> wall_motion = moving_wall_velocity ();
   FEFaceValues<dim>    face_values (
@@ -154,7 +166,12 @@ void TwoFluidSolver<dim>::setup_dofs ()
                std::to_string (Utilities::MPI::max (normal_motion, communicator)) +
                " m/s)");
   min_node_spacing = Utilities::MPI::min (h, communicator) / 2.0;
+}
 
+template <int dim>
+void TwoFluidSolver<dim>::report_mesh (
+    const std::vector<types::global_dof_index> &dofs_per_block) const
+{
   if (!initialized) // adaptations: the cell count is in monitors.csv
     pcout << "Mesh: " << triangulation.n_global_active_cells () << " cells; flow DoFs "
           << dofs_per_block[0] << " (u_g, u_s) + " << dofs_per_block[1]
@@ -207,6 +224,14 @@ Tensor<1, dim> TwoFluidSolver<dim>::moving_wall_velocity () const
 
 template void TwoFluidSolver<2>::setup_dofs ();
 template void TwoFluidSolver<3>::setup_dofs ();
+template void TwoFluidSolver<2>::reset_flow_preconditioner ();
+template void TwoFluidSolver<3>::reset_flow_preconditioner ();
+template void TwoFluidSolver<2>::measure_mesh ();
+template void TwoFluidSolver<3>::measure_mesh ();
+template void
+TwoFluidSolver<2>::report_mesh (const std::vector<types::global_dof_index> &) const;
+template void
+TwoFluidSolver<3>::report_mesh (const std::vector<types::global_dof_index> &) const;
 template void
 TwoFluidSolver<2>::make_mesh_constraints (const DoFHandler<2> &,
                                           AffineConstraints<double> &) const;

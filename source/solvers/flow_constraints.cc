@@ -20,10 +20,10 @@ template <int dim>
 void TwoFluidSolver<dim>::make_flow_constraints (const double at_time)
 {
   const IndexSet relevant = DoFTools::extract_locally_relevant_dofs (flow_dof_handler);
-  const FEValuesExtractors::Vector gas (0), solids (dim);
-  const ComponentMask              gas_mask    = flow_fe.component_mask (gas);
-  const ComponentMask              solids_mask = flow_fe.component_mask (solids);
-  const auto                       ids         = boundary_ids;
+  const auto    &ids      = boundary_ids;
+  const auto    &bc       = parameters.boundary;
+  const ComponentMask solids_mask =
+      flow_fe.component_mask (FEValuesExtractors::Vector (dim));
 
   if (manufactured)
     manufactured->set_time (at_time); // the step's exact boundary values and sources
@@ -31,7 +31,51 @@ void TwoFluidSolver<dim>::make_flow_constraints (const double at_time)
   flow_constraints.reinit (relevant);
   make_mesh_constraints (flow_dof_handler, flow_constraints);
 
-  const auto &bc = parameters.boundary;
+  if (manufactured && manufactured->slip_walls ())
+    constrain_walls ();
+  if (manufactured)
+  {
+    // verification: exact velocities on the inlet and (unless they slip) the walls,
+    // traction on the outlet
+    const ManufacturedFlowFunction<dim> exact (*manufactured);
+    ComponentMask                       velocities (2 * dim + 1, true);
+    velocities.set (2 * dim, false);
+    for (const auto id : {ids.wall, ids.inlet})
+      if (id != ids.wall || !manufactured->slip_walls ())
+        VectorTools::interpolate_boundary_values (
+            mapping, flow_dof_handler, id, exact, flow_constraints, velocities);
+  }
+  else
+  {
+    if (bc.hold_solids)
+      constrain_held_solids (at_time);
+    // walls first: their constraints take precedence at the corners
+    constrain_walls ();
+    constrain_inlet_gas (at_time);
+    // solids are held at the distributor and retained at the outlet (a grid)
+    for (const auto id : {ids.inlet, ids.outlet})
+      if (id != BoundaryIds::none)
+        VectorTools::interpolate_boundary_values (
+            mapping,
+            flow_dof_handler,
+            id,
+            Functions::ZeroFunction<dim> (2 * dim + 1),
+            flow_constraints,
+            solids_mask);
+  }
+  const types::global_dof_index pinned = pin_pressure (relevant);
+  flow_constraints.close ();
+  make_schur_constraints (relevant, pinned);
+}
+
+template <int dim>
+void TwoFluidSolver<dim>::constrain_walls ()
+{
+  const auto         &ids      = boundary_ids;
+  const auto         &bc       = parameters.boundary;
+  const ComponentMask gas_mask = flow_fe.component_mask (FEValuesExtractors::Vector (0));
+  const ComponentMask solids_mask =
+      flow_fe.component_mask (FEValuesExtractors::Vector (dim));
   // the moving wall's velocity for both phases, (u_w, u_w, 0)
   Vector<double>       wall_motion (2 * dim + 1);
   const Tensor<1, dim> wall_velocity = moving_wall_velocity ();
@@ -64,130 +108,113 @@ void TwoFluidSolver<dim>::make_flow_constraints (const double at_time)
       VectorTools::compute_no_normal_flux_constraints (
           flow_dof_handler, first, ids.walls (), flow_constraints, mapping);
   };
-  if (manufactured && manufactured->slip_walls ())
-  {
-    wall (dim, bc.solids_wall, solids_mask);
-    wall (0, bc.gas_wall, gas_mask);
-  }
-  if (manufactured)
-  {
-    // verification: exact velocities on the inlet and (unless they slip) the walls,
-    // traction on the outlet
-    const ManufacturedFlowFunction<dim> exact (*manufactured);
-    ComponentMask                       velocities (2 * dim + 1, true);
-    velocities.set (2 * dim, false);
-    for (const auto id : {ids.wall, ids.inlet})
-      if (id != ids.wall || !manufactured->slip_walls ())
-        VectorTools::interpolate_boundary_values (
-            mapping, flow_dof_handler, id, exact, flow_constraints, velocities);
-  }
-  else
-  {
-    if (bc.hold_solids)
+  wall (dim, bc.solids_wall, solids_mask);
+  wall (0, bc.gas_wall, gas_mask);
+}
+
+template <int dim>
+void TwoFluidSolver<dim>::constrain_held_solids (const double at_time)
+{
+  // every solids dof on owned and ghost cells, at the held velocity u_s(x, t)
+  held_velocity_function.set_time (at_time);
+  const Quadrature<dim> nodes (flow_fe.get_unit_support_points ());
+  FEValues<dim>         node_values (mapping, flow_fe, nodes, update_quadrature_points);
+  std::vector<types::global_dof_index> dofs (flow_fe.n_dofs_per_cell ());
+  for (const auto &cell : flow_dof_handler.active_cell_iterators ())
+    if (cell->is_locally_owned () || cell->is_ghost ())
     {
-      // every solids dof on owned and ghost cells, at the held velocity u_s(x, t)
-      held_velocity_function.set_time (at_time);
-      const Quadrature<dim> nodes (flow_fe.get_unit_support_points ());
-      FEValues<dim> node_values (mapping, flow_fe, nodes, update_quadrature_points);
-      std::vector<types::global_dof_index> dofs (flow_fe.n_dofs_per_cell ());
-      for (const auto &cell : flow_dof_handler.active_cell_iterators ())
-        if (cell->is_locally_owned () || cell->is_ghost ())
+      cell->get_dof_indices (dofs);
+      node_values.reinit (cell);
+      for (unsigned int i = 0; i < dofs.size (); ++i)
+      {
+        const unsigned int c = flow_fe.system_to_component_index (i).first;
+        if (c < dim || c >= 2 * dim || flow_constraints.is_constrained (dofs[i]))
+          continue;
+        Point<3> x;
+        for (unsigned int d = 0; d < dim; ++d)
+          x[d] = node_values.quadrature_point (i)[d];
+        flow_constraints.add_line (dofs[i]);
+        flow_constraints.set_inhomogeneity (dofs[i],
+                                            held_velocity_function.value (x, c - dim));
+      }
+    }
+}
+
+template <int dim>
+void TwoFluidSolver<dim>::constrain_inlet_gas (const double at_time)
+{
+  // the gas enters against gravity with the superficial velocity U, i.e. at U/alpha_g
+  // with the local gas fraction at each node, so the volume flux is U whatever bed sits
+  // on the distributor
+  const Tensor<1, dim>  up = upward_direction<dim> (parameters.physical.gravity);
+  const double          U  = inlet_superficial_velocity (at_time);
+  const Quadrature<dim> nodes (flow_fe.get_unit_support_points ());
+  FEValues<dim>         alpha_at_nodes (mapping, alpha_fe, nodes, update_values);
+  std::vector<double>   alpha_values (nodes.size ());
+  std::vector<types::global_dof_index> dofs (flow_fe.n_dofs_per_cell ());
+  auto                                 alpha_cell = alpha_dof_handler.begin_active ();
+  for (const auto &cell : flow_dof_handler.active_cell_iterators ())
+  {
+    if ((cell->is_locally_owned () || cell->is_ghost ()) && cell->at_boundary ())
+      for (const unsigned int f : cell->face_indices ())
+        if (cell->face (f)->at_boundary () &&
+            cell->face (f)->boundary_id () == boundary_ids.inlet)
         {
+          alpha_at_nodes.reinit (alpha_cell);
+          alpha_at_nodes.get_function_values (alpha, alpha_values);
           cell->get_dof_indices (dofs);
-          node_values.reinit (cell);
           for (unsigned int i = 0; i < dofs.size (); ++i)
           {
             const unsigned int c = flow_fe.system_to_component_index (i).first;
-            if (c < dim || c >= 2 * dim || flow_constraints.is_constrained (dofs[i]))
+            if (c >= dim || !flow_fe.has_support_on_face (i, f) ||
+                flow_constraints.is_constrained (dofs[i]))
               continue;
-            Point<3> x;
-            for (unsigned int d = 0; d < dim; ++d)
-              x[d] = node_values.quadrature_point (i)[d];
             flow_constraints.add_line (dofs[i]);
-            flow_constraints.set_inhomogeneity (
-                dofs[i], held_velocity_function.value (x, c - dim));
+            flow_constraints.set_inhomogeneity (dofs[i],
+                                                U / (1.0 - alpha_values[i]) * up[c]);
           }
         }
-    }
-    // walls first: their constraints take precedence at the corners
-    wall (dim, bc.solids_wall, solids_mask);
-    wall (0, bc.gas_wall, gas_mask);
-    // inlet: the gas enters against gravity with the superficial velocity U, i.e. at
-    // U/alpha_g with the local gas fraction at each node, so the volume flux is U
-    // whatever bed sits on the distributor; solids are held at the distributor and
-    // retained at the outlet (a grid)
-    {
-      const Tensor<1, dim>  up = upward_direction<dim> (parameters.physical.gravity);
-      const double          U  = inlet_superficial_velocity (at_time);
-      const Quadrature<dim> nodes (flow_fe.get_unit_support_points ());
-      FEValues<dim>         alpha_at_nodes (mapping, alpha_fe, nodes, update_values);
-      std::vector<double>   alpha_values (nodes.size ());
-      std::vector<types::global_dof_index> dofs (flow_fe.n_dofs_per_cell ());
-      auto                                 alpha_cell = alpha_dof_handler.begin_active ();
-      for (const auto &cell : flow_dof_handler.active_cell_iterators ())
-      {
-        if ((cell->is_locally_owned () || cell->is_ghost ()) && cell->at_boundary ())
-          for (const unsigned int f : cell->face_indices ())
-            if (cell->face (f)->at_boundary () &&
-                cell->face (f)->boundary_id () == ids.inlet)
-            {
-              alpha_at_nodes.reinit (alpha_cell);
-              alpha_at_nodes.get_function_values (alpha, alpha_values);
-              cell->get_dof_indices (dofs);
-              for (unsigned int i = 0; i < dofs.size (); ++i)
-              {
-                const unsigned int c = flow_fe.system_to_component_index (i).first;
-                if (c >= dim || !flow_fe.has_support_on_face (i, f) ||
-                    flow_constraints.is_constrained (dofs[i]))
-                  continue;
-                flow_constraints.add_line (dofs[i]);
-                flow_constraints.set_inhomogeneity (dofs[i],
-                                                    U / (1.0 - alpha_values[i]) * up[c]);
-              }
-            }
-        ++alpha_cell;
-      }
-    }
-    for (const auto id : {ids.inlet, ids.outlet})
-      if (id != BoundaryIds::none)
-        VectorTools::interpolate_boundary_values (
-            mapping,
-            flow_dof_handler,
-            id,
-            Functions::ZeroFunction<dim> (2 * dim + 1),
-            flow_constraints,
-            solids_mask);
+    ++alpha_cell;
   }
+}
+
+template <int dim>
+types::global_dof_index TwoFluidSolver<dim>::pin_pressure (const IndexSet &relevant)
+{
   // without an outlet (a closed or periodic domain) p' is fixed to 0 at one node: the
   // first pressure dof that is not a periodic or hanging copy of another
   types::global_dof_index pinned = numbers::invalid_dof_index;
-  if (ids.outlet == BoundaryIds::none)
-  {
-    const IndexSet &pressure_owned = flow_owned[1];
-    const auto      offset         = flow_owned[0].size ();
-    for (const auto i : pressure_owned)
-      if (!flow_constraints.is_constrained (offset + i))
-      {
-        pinned = offset + i;
-        break;
-      }
-    pinned = Utilities::MPI::min (pinned, communicator);
-    if (relevant.is_element (pinned))
-      flow_constraints.add_line (pinned);
-  }
-  flow_constraints.close ();
+  if (boundary_ids.outlet != BoundaryIds::none)
+    return pinned;
+  const IndexSet &pressure_owned = flow_owned[1];
+  const auto      offset         = flow_owned[0].size ();
+  for (const auto i : pressure_owned)
+    if (!flow_constraints.is_constrained (offset + i))
+    {
+      pinned = offset + i;
+      break;
+    }
+  pinned = Utilities::MPI::min (pinned, communicator);
+  if (relevant.is_element (pinned))
+    flow_constraints.add_line (pinned);
+  return pinned;
+}
 
-  // Schur preconditioner: the pressure is fixed where the outlet is traction-free (or
+template <int dim>
+void TwoFluidSolver<dim>::make_schur_constraints (const IndexSet               &relevant,
+                                                  const types::global_dof_index pinned)
+{
+  // the Schur preconditioner's pressure is fixed where the outlet is traction-free (or
   // at the pinned node)
   schur_constraints.clear ();
   schur_constraints.reinit (relevant);
   make_mesh_constraints (flow_dof_handler, schur_constraints);
   ComponentMask pressure_mask (2 * dim + 1, false);
   pressure_mask.set (2 * dim, true);
-  if (ids.outlet != BoundaryIds::none)
+  if (boundary_ids.outlet != BoundaryIds::none)
     VectorTools::interpolate_boundary_values (mapping,
                                               flow_dof_handler,
-                                              ids.outlet,
+                                              boundary_ids.outlet,
                                               Functions::ZeroFunction<dim> (2 * dim + 1),
                                               schur_constraints,
                                               pressure_mask);
@@ -196,6 +223,15 @@ void TwoFluidSolver<dim>::make_flow_constraints (const double at_time)
   schur_constraints.close ();
 }
 
-template void TwoFluidSolver<2>::make_flow_constraints (double);
-template void TwoFluidSolver<3>::make_flow_constraints (double);
+#define WETBED_INSTANTIATE(dim)                                                          \
+  template void                    TwoFluidSolver<dim>::make_flow_constraints (double);  \
+  template void                    TwoFluidSolver<dim>::constrain_walls ();              \
+  template void                    TwoFluidSolver<dim>::constrain_held_solids (double);  \
+  template void                    TwoFluidSolver<dim>::constrain_inlet_gas (double);    \
+  template types::global_dof_index TwoFluidSolver<dim>::pin_pressure (const IndexSet &); \
+  template void TwoFluidSolver<dim>::make_schur_constraints (const IndexSet &,           \
+                                                             types::global_dof_index);
+WETBED_INSTANTIATE (2)
+WETBED_INSTANTIATE (3)
+#undef WETBED_INSTANTIATE
 } // namespace wetbed

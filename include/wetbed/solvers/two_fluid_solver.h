@@ -99,7 +99,28 @@ public:
 private:
   // set-up (two_fluid_solver.cc)
   void setup_dofs ();
+  // its parts (source/solvers/dof_setup.cc)
+  /** A fresh flow preconditioner for this mesh (its build counts go on). */
+  void reset_flow_preconditioner ();
+  /** The smallest node spacing (the CFL limit) and the moving wall's tangency check. */
+  void measure_mesh ();
+  /** The mesh and DoF counts and, on several ranks, the partition's balance. */
+  void
+  report_mesh (const std::vector<dealii::types::global_dof_index> &dofs_per_block) const;
   void make_flow_constraints (double at_time);
+  // its parts (source/solvers/flow_constraints.cc)
+  /** No slip, a moving wall's velocity, or strong no penetration on the walls. */
+  void constrain_walls ();
+  /** Every solids velocity DoF at `boundary conditions/held solids velocity`. */
+  void constrain_held_solids (double at_time);
+  /** The inlet gas velocity U(t)/alpha_g against gravity at each inlet node. */
+  void constrain_inlet_gas (double at_time);
+  /** Without an outlet: p' = 0 at the first free pressure DoF (returned; else
+   * invalid). */
+  dealii::types::global_dof_index pin_pressure (const dealii::IndexSet &relevant);
+  /** The Schur preconditioner's pressure fixed on the outlet (or at `pinned`). */
+  void make_schur_constraints (const dealii::IndexSet         &relevant,
+                               dealii::types::global_dof_index pinned);
   void set_initial_state ();
   // moving the fields with the mesh (source/solvers/field_transfer.cc)
   using FlowTransfer = dealii::parallel::distributed::SolutionTransfer<dim, BlockVector>;
@@ -173,6 +194,35 @@ private:
   // granular temperature (source/assembly/granular_energy.cc): the PDE, or the local
   // equilibrium projected onto the nodes; false if the solve failed
   bool update_granular_temperature (const BDFCoefficients &bdf, double dt);
+  /** FEValues, Gauss-point fields and local system of the Theta assembly. */
+  struct GranularEnergyScratch;
+  /** Algebraic model: the local equilibrium lumped-L2 projected into `solution`. */
+  void
+  project_algebraic_granular_temperature (dealii::TrilinosWrappers::MPI::Vector &solution,
+                                          GranularEnergyBudget &budget) const;
+  /** PDE model: granular_energy_matrix and `rhs` assembled and compressed. */
+  void assemble_granular_energy_system (const BDFCoefficients                 &bdf,
+                                        double                                 dt,
+                                        dealii::TrilinosWrappers::MPI::Vector &rhs,
+                                        GranularEnergyBudget                  &budget);
+  /** PDE model, one cell's volume terms; returns the cell Peclet number. */
+  double assemble_granular_energy_volume_terms (
+      const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
+      GranularEnergyScratch                                        &scratch,
+      const BDFCoefficients                                        &bdf,
+      double                                                        dt,
+      GranularEnergyBudget                                         &budget) const;
+  /** PDE model, one cell's manufactured boundary flux and Johnson-Jackson wall terms. */
+  void assemble_granular_energy_boundary_terms (
+      const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
+      const typename dealii::DoFHandler<dim>::active_cell_iterator &flow_cell,
+      GranularEnergyScratch                                        &scratch,
+      GranularEnergyBudget                                         &budget) const;
+  /** PDE model: GMRES from the current Theta; false (rejection_reason) if it failed. */
+  bool solve_granular_energy_system (const dealii::TrilinosWrappers::MPI::Vector &rhs,
+                                     dealii::TrilinosWrappers::MPI::Vector &solution);
+  /** Theta = the clamped nodal `solution`; false (rejection_reason) if not finite. */
+  bool set_granular_temperature (const dealii::TrilinosWrappers::MPI::Vector &solution);
 
   // linear solve (source/solvers/flow_solve.cc)
   unsigned int solve_flow_system (double dt);

@@ -1,34 +1,15 @@
+#include <wetbed/closures/drag/drag_laws.h>
 #include <wetbed/closures/drag/drag_model.h>
-#include <wetbed/closures/drag/gidaspow.h>
-#include <wetbed/closures/drag/no_drag.h>
-#include <wetbed/closures/drag/syamlal_obrien.h>
-#include <wetbed/closures/drag/wen_yu.h>
 #include <wetbed/core/input_error.h>
-
-#include <functional>
-#include <map>
 
 namespace wetbed::closures
 {
 namespace
 {
-using Factory = std::function<std::unique_ptr<DragModel> ()>;
-
-template <class Law>
-std::pair<const std::string, Factory> entry ()
+/** Adding a drag law: one header and one name in DragLaws (drag/drag_laws.h). */
+const LawRegistry<DragModel> &registry ()
 {
-  return {Law::name, [] { return std::make_unique<DragModelFromLaw<Law>> (); }};
-}
-
-/** Adding a drag law: one header and one line here. */
-const std::map<std::string, Factory> &registry ()
-{
-  static const std::map<std::string, Factory> laws = {
-      entry<SyamlalOBrien> (),
-      entry<Gidaspow> (),
-      entry<WenYu> (),
-      entry<NoDrag> (),
-  };
+  static const auto laws = make_law_registry<DragModelFromLaw, DragModel> (DragLaws{});
   return laws;
 }
 } // namespace

@@ -1,7 +1,5 @@
-#include <wetbed/closures/kinetic_theory/granular_conductivity.h>
-#include <wetbed/closures/kinetic_theory/kinetic_viscosity.h>
-#include <wetbed/closures/kinetic_theory/radial_distribution.h>
-
+#include <wetbed/closures/kinetic_theory/granular_material.h>
+#include <wetbed/closures/kinetic_theory/kinetic_theory_laws.h>
 #include <wetbed/closures/law_registry.h>
 
 namespace wetbed::closures
@@ -10,29 +8,25 @@ namespace
 {
 const LawRegistry<RadialDistribution> &radial_distributions ()
 {
-  static const auto registry = make_law_registry<RadialDistributionFromLaw,
-                                                 RadialDistribution,
-                                                 OgawaRadialDistribution,
-                                                 CarnahanStarlingRadialDistribution,
-                                                 LunSavageRadialDistribution> ();
+  static const auto registry =
+      make_law_registry<RadialDistributionFromLaw, RadialDistribution> (
+          RadialDistributionLaws{});
   return registry;
 }
 
 const LawRegistry<KineticTheoryCoefficient> &kinetic_viscosities ()
 {
-  static const auto registry = make_law_registry<KineticTheoryCoefficientFromLaw,
-                                                 KineticTheoryCoefficient,
-                                                 GidaspowKineticViscosity,
-                                                 SyamlalKineticViscosity> ();
+  static const auto registry =
+      make_law_registry<KineticTheoryCoefficientFromLaw, KineticTheoryCoefficient> (
+          KineticViscosityLaws{});
   return registry;
 }
 
 const LawRegistry<KineticTheoryCoefficient> &granular_conductivities ()
 {
-  static const auto registry = make_law_registry<KineticTheoryCoefficientFromLaw,
-                                                 KineticTheoryCoefficient,
-                                                 GidaspowConductivity,
-                                                 SyamlalConductivity> ();
+  static const auto registry =
+      make_law_registry<KineticTheoryCoefficientFromLaw, KineticTheoryCoefficient> (
+          GranularConductivityLaws{});
   return registry;
 }
 

@@ -21,24 +21,12 @@ template <typename Number>
 WetContact<Number> WetParticles::contact (const Number &alpha_s,
                                           const Number &theta) const
 {
-  const auto &l = liquid_properties;
-  // floors: no solids -> an infinite gap; Theta -> 0 -> St -> 0; the gap above
-  // Woodcock's packing (h <= 0) is floored at h_a/100 for h_c - h, St* and P (the window
-  // is then closed: dry contact)
-  const Number       a     = alpha_s > 1e-12 ? alpha_s : Number (1e-12);
-  const Number       t     = theta > 1e-14 ? theta : Number (1e-14);
-  const Number       gap   = woodcock_gap (a, particle.particle_diameter);
-  const Number       h     = gap > 0.01 * l.asperity ? gap : Number (0.01 * l.asperity);
-  const Number       u_dot = approach_velocity (t, l.approach_factor);
-  const Number       h_c   = rupture->value (u_dot, l, particle);
-  WetContact<Number> c;
-  c.gap              = gap;
-  c.rupture_distance = h_c;
-  c.above_asperity = smooth_step (Number ((h - l.asperity) / l.asperity), l.switch_width);
-  c.bridged        = smooth_step (Number ((h_c - h) / h_c), l.switch_width);
-  c.stokes         = stokes_number (u_dot, particle, l.liquid_viscosity);
-  c.critical_stokes = critical_stokes_number (h, l.asperity, particle.dry_restitution);
-  return c;
+  return wet_contact (alpha_s,
+                      theta,
+                      liquid_properties,
+                      particle,
+                      [this] (const Number &u_dot)
+                      { return rupture->value (u_dot, liquid_properties, particle); });
 }
 
 WetClosures

@@ -1,11 +1,7 @@
-#include <wetbed/closures/wet/bridge_gated_restitution.h>
-#include <wetbed/closures/wet/gollwitzer_restitution.h>
-#include <wetbed/closures/wet/lian_rupture_distance.h>
-#include <wetbed/closures/wet/literal_restitution.h>
-#include <wetbed/closures/wet/mikami_rupture_distance.h>
-#include <wetbed/closures/wet/pitois_rupture_distance.h>
-
 #include <wetbed/closures/law_registry.h>
+#include <wetbed/closures/wet/rupture_distance.h>
+#include <wetbed/closures/wet/wet_laws.h>
+#include <wetbed/closures/wet/wet_restitution.h>
 
 namespace wetbed::closures
 {
@@ -13,21 +9,15 @@ namespace
 {
 const LawRegistry<RuptureDistance> &rupture_distances ()
 {
-  static const auto registry = make_law_registry<RuptureDistanceFromLaw,
-                                                 RuptureDistance,
-                                                 LianRuptureDistance,
-                                                 PitoisRuptureDistance,
-                                                 MikamiRuptureDistance> ();
+  static const auto registry =
+      make_law_registry<RuptureDistanceFromLaw, RuptureDistance> (RuptureDistanceLaws{});
   return registry;
 }
 
 const LawRegistry<WetRestitution> &wet_restitutions ()
 {
-  static const auto registry = make_law_registry<WetRestitutionFromLaw,
-                                                 WetRestitution,
-                                                 BridgeGatedRestitution,
-                                                 LiteralRestitution,
-                                                 GollwitzerRestitution> ();
+  static const auto registry =
+      make_law_registry<WetRestitutionFromLaw, WetRestitution> (WetRestitutionLaws{});
   return registry;
 }
 

@@ -2,6 +2,7 @@
 
 #include <wetbed/closures/drag/drag_model.h>
 #include <wetbed/closures/drag/wen_yu.h>
+#include <wetbed/closures/number_traits.h>
 
 namespace wetbed::closures
 {
@@ -27,9 +28,9 @@ struct Gidaspow
   static Number
   beta (const Number &alpha_s, const Number &slip, const GasParticleProperties &p)
   {
-    if (1.0 - alpha_s <= 0.8)
-      return ergun (alpha_s, slip, p);
-    return WenYu::beta (alpha_s, slip, p);
+    const Number alpha_g = 1.0 - alpha_s;
+    return select_less_equal (
+        alpha_g, 0.8, ergun (alpha_s, slip, p), WenYu::beta (alpha_s, slip, p));
   }
 };
 } // namespace wetbed::closures

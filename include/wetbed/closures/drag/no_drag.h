@@ -1,6 +1,7 @@
 #pragma once
 
 #include <wetbed/closures/drag/drag_model.h>
+#include <wetbed/closures/number_traits.h>
 
 namespace wetbed::closures
 {

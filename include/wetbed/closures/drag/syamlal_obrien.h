@@ -1,6 +1,7 @@
 #pragma once
 
 #include <wetbed/closures/drag/drag_model.h>
+#include <wetbed/closures/number_traits.h>
 
 #include <cmath>
 
@@ -23,8 +24,8 @@ struct SyamlalOBrien
     using std::pow;
     using std::sqrt;
     const Number a = pow (alpha_g, 4.14);
-    const Number b = (alpha_g <= 0.85) ? Number (0.8 * pow (alpha_g, 1.28))
-                                       : Number (pow (alpha_g, 2.65));
+    const Number b = select_less_equal (
+        alpha_g, 0.85, Number (0.8 * pow (alpha_g, 1.28)), Number (pow (alpha_g, 2.65)));
     const Number r = 0.06 * reynolds;
     return 0.5 * (a - r + sqrt (r * r + 0.12 * reynolds * (2.0 * b - a) + a * a));
   }

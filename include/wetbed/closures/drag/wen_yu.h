@@ -1,6 +1,7 @@
 #pragma once
 
 #include <wetbed/closures/drag/drag_model.h>
+#include <wetbed/closures/number_traits.h>
 
 #include <cmath>
 
@@ -26,10 +27,11 @@ struct WenYu
         alpha_g * p.gas_density * p.particle_diameter * slip / p.gas_viscosity;
     const double d         = p.particle_diameter;
     const Number hindrance = pow (alpha_g, -2.65);
-    if (reynolds < 1000.0)
-      return 18.0 * p.gas_viscosity * alpha_s * hindrance *
-             (1.0 + 0.15 * pow (reynolds, 0.687)) / (d * d);
-    return 0.75 * 0.44 * alpha_s * alpha_g * p.gas_density * slip * hindrance / d;
+    const Number stokes    = 18.0 * p.gas_viscosity * alpha_s * hindrance *
+                          (1.0 + 0.15 * pow (reynolds, 0.687)) / (d * d);
+    const Number newton =
+        0.75 * 0.44 * alpha_s * alpha_g * p.gas_density * slip * hindrance / d;
+    return select_less (reynolds, 1000.0, stokes, newton);
   }
 };
 } // namespace wetbed::closures

@@ -1,14 +1,15 @@
 #pragma once
 
 #include <wetbed/closures/kinetic_theory/granular_material.h>
+#include <wetbed/closures/number_traits.h>
 
 #include <cmath>
 
 namespace wetbed::closures
 {
 /**
- * Local-equilibrium (algebraic) granular temperature (reference/closures.md s3): the
- * granular-energy balance without convection and conduction,
+ * Local-equilibrium (algebraic) granular temperature (doc/theory.md, "Granular energy"):
+ * the granular-energy balance without convection and conduction,
  *   sigma_s : grad u_s - gamma - 3 beta Theta = 0,
  * with the Syamlal-Rogers-O'Brien closures written as P = p_hat Theta,
  * mu = K3 alpha sqrt(Theta), lambda - 2/3 mu = K2 alpha sqrt(Theta),
@@ -48,13 +49,13 @@ struct AlgebraicGranularTemperature
     const Number a  = k4 * alpha * alpha;
     const Number b  = p_hat * trace_d + 3.0 * beta;
     const Number c  = alpha * (2.0 * k3 * d_ddot_d + k2 * trace_d * trace_d);
-    if (!(c > 0.0) || !(a > 0.0))
-      return Number (0.0);
     // the positive root, written without cancellation for either sign of b
     const Number root = sqrt (b * b + 4.0 * a * c);
-    const Number x =
-        b >= 0.0 ? Number (2.0 * c / (b + root)) : Number ((root - b) / (2.0 * a));
-    return x * x;
+    const Number x    = select_greater_equal (
+        b, 0.0, Number (2.0 * c / (b + root)), Number ((root - b) / (2.0 * a)));
+    // 0 unless c > 0 and a > 0 (also where either is NaN)
+    const Number zero (0.0);
+    return select_greater (c, 0.0, select_greater (a, 0.0, Number (x * x), zero), zero);
   }
 };
 } // namespace wetbed::closures

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <wetbed/closures/kinetic_theory/granular_material.h>
+#include <wetbed/closures/number_traits.h>
 
 #include <cmath>
 
@@ -8,7 +9,7 @@ namespace wetbed::closures
 {
 /**
  * The terms of the kinetic theory with a single accepted form (Lun et al. 1984;
- * reference/closures.md s2.2-2.7), MFIX stress convention.
+ * doc/theory.md, "Kinetic-theory closures"), MFIX stress convention.
  */
 struct CollisionalTerms
 {

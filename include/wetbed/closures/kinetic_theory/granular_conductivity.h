@@ -1,12 +1,14 @@
 #pragma once
 
 #include <wetbed/closures/kinetic_theory/granular_material.h>
+#include <wetbed/closures/number_traits.h>
 
 #include <cmath>
 
 namespace wetbed::closures
 {
-/** Conductivity kappa of granular energy (kg m^-1 s^-1; reference/closures.md s2.5). */
+/** Conductivity kappa of granular energy (kg m^-1 s^-1; doc/theory.md,
+ * "Kinetic-theory closures"). */
 
 /**
  * Gidaspow: 150 rho d sqrt(pi Theta) / (384 (1+e) g0) [1 + 6/5 alpha g0 (1+e)]^2

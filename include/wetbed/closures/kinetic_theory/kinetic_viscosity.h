@@ -1,6 +1,7 @@
 #pragma once
 
 #include <wetbed/closures/kinetic_theory/granular_material.h>
+#include <wetbed/closures/number_traits.h>
 
 #include <cmath>
 
@@ -8,7 +9,7 @@ namespace wetbed::closures
 {
 /**
  * Kinetic (streaming) part of the solids shear viscosity, MFIX convention (a full dynamic
- * viscosity, no alpha_s in front in the stress; reference/closures.md s2.3).
+ * viscosity, no alpha_s in front in the stress; doc/theory.md, "Conventions").
  */
 
 /** Gidaspow: 10 rho d sqrt(pi Theta) / (96 (1+e) g0) [1 + 4/5 alpha g0 (1+e)]^2. */

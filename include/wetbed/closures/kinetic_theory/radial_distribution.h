@@ -1,11 +1,14 @@
 #pragma once
 
+#include <wetbed/closures/number_traits.h>
+
 #include <cmath>
 
 namespace wetbed::closures
 {
 /**
- * Radial distribution functions at contact g0(alpha_s) (reference/closures.md s2.1).
+ * Radial distribution functions at contact g0(alpha_s) (doc/theory.md,
+ * "Kinetic-theory closures").
  * The caller caps alpha_s (GranularTemperature evaluates g0 at min(alpha_s, cap)) so that
  * the forms that diverge at alpha_max stay finite.
  */
@@ -17,8 +20,7 @@ struct OgawaRadialDistribution
   template <typename Number>
   static Number value (const Number &alpha, const double alpha_max)
   {
-    using std::cbrt;
-    return 1.0 / (1.0 - cbrt (alpha / alpha_max));
+    return 1.0 / (1.0 - math::cbrt (Number (alpha / alpha_max)));
   }
 };
 

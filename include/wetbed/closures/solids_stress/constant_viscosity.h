@@ -19,6 +19,9 @@ public:
   {
   }
 
+  /** From `solids stress` (shear viscosity, frictional pressure). */
+  static std::unique_ptr<SolidsStressModel> create (const SolidsStressSettings &settings);
+
   std::string name () const override { return model_name; }
 
   SolidsStress evaluate (const SolidsState &state) const override

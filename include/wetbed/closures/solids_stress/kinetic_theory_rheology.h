@@ -10,7 +10,8 @@
 namespace wetbed::closures
 {
 /**
- * Kinetic theory of granular flow with friction (DESIGN s2):
+ * Kinetic theory of granular flow with friction (doc/theory.md,
+ * "Kinetic-theory closures"):
  *   P_s = P_fr(alpha_s) [Johnson-Jackson, the compaction pressure] + alpha rho Theta
  *         [1 + 2(1+e) alpha g0] [Lun, the kinetic pressure],
  *   mu_s = mu_col + mu_kin + mu_fr + mu_wet, mu_fr = Schaeffer with P_fr (capped),
@@ -37,6 +38,9 @@ public:
         wet_pressure_in_solids_pressure (wet_pressure_in_solids_pressure)
   {
   }
+
+  /** From `solids stress` (frictional pressure), `kinetic theory` and `wet particles`. */
+  static std::unique_ptr<SolidsStressModel> create (const SolidsStressSettings &settings);
 
   std::string name () const override { return model_name; }
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <wetbed/closures/drag/drag_model.h>
+#include <wetbed/closures/frictional/johnson_jackson_pressure.h>
 
 #include <memory>
 #include <string>
@@ -53,6 +54,16 @@ public:
   virtual const KineticTheory *kinetic_theory () const { return nullptr; }
 };
 
+/** What a rheology is built from: the parameter sections it reads. */
+struct SolidsStressSettings
+{
+  const SolidsStressParameters  &stress;
+  const PhysicalProperties      &physical;
+  const KineticTheoryParameters &kinetic;
+  const WetParticleParameters   &wet;
+};
+
+/** The rheology registered under `solids stress/model` (solids_stress_laws.h). */
 std::unique_ptr<SolidsStressModel>
 create_solids_stress_model (const SolidsStressParameters  &parameters,
                             const PhysicalProperties      &physical,
@@ -60,4 +71,9 @@ create_solids_stress_model (const SolidsStressParameters  &parameters,
                             const WetParticleParameters   &wet);
 
 std::string solids_stress_model_names ();
+
+/** The Johnson-Jackson frictional pressure's coefficients of `solids stress`. */
+JohnsonJacksonPressureCoefficients
+johnson_jackson_coefficients (const SolidsStressParameters &stress,
+                              const PhysicalProperties     &physical);
 } // namespace wetbed::closures

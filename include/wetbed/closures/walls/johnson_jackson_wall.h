@@ -1,12 +1,14 @@
 #pragma once
 
+#include <wetbed/closures/number_traits.h>
+
 #include <cmath>
 
 namespace wetbed::closures
 {
 /**
- * Johnson-Jackson (1987) partial-slip wall for the solids (reference/closures.md,
- * DESIGN s3), n the outward normal of the solids domain:
+ * Johnson-Jackson (1987) partial-slip wall for the solids (doc/theory.md,
+ * "Johnson-Jackson walls"), n the outward normal of the solids domain:
  *   tangential traction (sigma_s n)_t = -C_JJ u_slip,
  *   C_JJ = sqrt(3) pi phi' (alpha_s/alpha_max) rho_s g0 sqrt(Theta) / 6,
  *   granular-energy flux kappa dTheta/dn = G_w - D_w, G_w = C_JJ |u_slip|^2,

@@ -5,8 +5,8 @@
 namespace wetbed::closures
 {
 /**
- * Seed 000 Eq. 11, bridge-gated reading (the default, DESIGN s2): a collision feels the
- * liquid only where a bridge exists, h_a < h <= h_c:
+ * Seed 000 Eq. 11, bridge-gated reading (the default; doc/theory.md, "Wet closures"): a
+ * collision feels the liquid only where a bridge exists, h_a < h <= h_c:
  *   e = e_dry max(0, 1 - St^* / St)  inside the window,
  *   e = e_dry                     for h > h_c (bridges ruptured) or h <= h_a (dry
  *                                 frictional contact),

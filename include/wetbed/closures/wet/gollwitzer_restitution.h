@@ -22,7 +22,8 @@ struct GollwitzerRestitution
     const double film_loss = 1.5 * liquid.liquid_density / particle.particle_density *
                              liquid.film_thickness / e;
     const Number value = (e - film_loss) * (1.0 - 14.0 / contact.stokes);
-    return value < 0 ? Number (0.0) : (value > e ? Number (e) : value);
+    return select_less (
+        value, 0.0, Number (0.0), select_greater (value, e, Number (e), value));
   }
 };
 } // namespace wetbed::closures

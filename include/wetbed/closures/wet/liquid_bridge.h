@@ -1,6 +1,7 @@
 #pragma once
 
 #include <wetbed/closures/frictional/schaeffer_viscosity.h>
+#include <wetbed/closures/number_traits.h>
 
 #include <cmath>
 
@@ -8,7 +9,7 @@ namespace wetbed::closures
 {
 /**
  * Liquid and bridge data of a slightly wet bed (`subsection wet particles`; seed 000 s3,
- * DESIGN s2 "Wet closures").
+ * doc/theory.md, "Wet closures").
  */
 struct LiquidBridgeProperties
 {
@@ -56,7 +57,7 @@ Number woodcock_gap (const Number &alpha_s, const double diameter)
 }
 
 /** Approach velocity u_dot = c_u sqrt(pi Theta): c_u = 3/2 makes seed 000 Eq. 5 follow
- * from Eqs. 2-4 (its Eq. 3 prints 2/3; DESIGN s2). */
+ * from Eqs. 2-4 (its Eq. 3 prints 2/3; doc/theory.md, "Wet closures"). */
 template <typename Number>
 Number approach_velocity (const Number &theta, const double approach_factor)
 {
@@ -90,10 +91,9 @@ Number critical_stokes_number (const Number &gap,
 template <typename Number>
 Number smooth_step (const Number &x, const double width)
 {
-  using std::tanh;
   if (width > 0)
-    return 0.5 * (1.0 + tanh (x / width));
-  return x >= 0 ? Number (1.0) : Number (0.0);
+    return 0.5 * (1.0 + math::tanh (Number (x / width)));
+  return select_greater_equal (x, 0.0, Number (1.0), Number (0.0));
 }
 
 /** The liquid-bridge normal stress of a bridged contact, before the gap window:
@@ -127,5 +127,38 @@ Number wet_viscosity (const Number &wet_pressure,
                                                 stability_angle,
                                                 regularisation,
                                                 maximum_viscosity / std::sqrt (2.0));
+}
+
+/**
+ * The contact state at (alpha_s, Theta) (gap, h_c, window indicators, St, St*), with
+ * the rupture distance h_c(u_dot) of a law as a callable, e.g.
+ * [&](const Number &u) { return LianRuptureDistance::value (u, liquid, particle); }.
+ * Floors: no solids -> an infinite gap; Theta -> 0 -> St -> 0; the gap above Woodcock's
+ * packing (h <= 0) is floored at h_a/100 for h_c - h, St* and P (the window is then
+ * closed: dry contact).
+ */
+template <typename Number, typename RuptureDistanceFunction>
+WetContact<Number> wet_contact (const Number                  &alpha_s,
+                                const Number                  &theta,
+                                const LiquidBridgeProperties  &liquid,
+                                const WetParticleMaterial     &particle,
+                                const RuptureDistanceFunction &rupture_distance)
+{
+  const auto        &l         = liquid;
+  const Number       a         = select_greater (alpha_s, 1e-12, alpha_s, Number (1e-12));
+  const Number       t         = select_greater (theta, 1e-14, theta, Number (1e-14));
+  const Number       gap       = woodcock_gap (a, particle.particle_diameter);
+  const Number       gap_floor = 0.01 * l.asperity;
+  const Number       h         = select_greater (gap, gap_floor, gap, gap_floor);
+  const Number       u_dot     = approach_velocity (t, l.approach_factor);
+  const Number       h_c       = rupture_distance (u_dot);
+  WetContact<Number> c;
+  c.gap              = gap;
+  c.rupture_distance = h_c;
+  c.above_asperity = smooth_step (Number ((h - l.asperity) / l.asperity), l.switch_width);
+  c.bridged        = smooth_step (Number ((h_c - h) / h_c), l.switch_width);
+  c.stokes         = stokes_number (u_dot, particle, l.liquid_viscosity);
+  c.critical_stokes = critical_stokes_number (h, l.asperity, particle.dry_restitution);
+  return c;
 }
 } // namespace wetbed::closures

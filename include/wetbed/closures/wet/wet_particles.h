@@ -27,10 +27,10 @@ struct WetClosures
 };
 
 /**
- * The wet-particle closures of seed 000 s3 (DESIGN s2): gap, rupture distance (law by
- * name), approach velocity, P_wet, mu_wet, St, St*, e_wet (law by name). Constructed only
- * when the liquid loading is positive: a dry scene has no WetParticles object and
- * evaluates none of this.
+ * The wet-particle closures of seed 000 s3 (doc/theory.md, "Wet closures"): gap,
+ * rupture distance (law by name), approach velocity, P_wet, mu_wet, St, St*, e_wet (law
+ * by name). Constructed only when the liquid loading is positive: a dry scene has no
+ * WetParticles object and evaluates none of this.
  */
 class WetParticles
 {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <wetbed/closures/drag/drag_model.h>
+#include <wetbed/closures/number_traits.h>
 #include <wetbed/closures/wet/liquid_bridge.h>
 
 #include <memory>
@@ -55,8 +56,11 @@ Number bridged_restitution (const WetContact<Number> &contact,
                             const double              dry_restitution)
 {
   const Number r = 1.0 - contact.critical_stokes / contact.stokes;
-  return r > 0 ? (r < 1 ? Number (dry_restitution * r) : Number (dry_restitution))
-               : Number (0.0);
+  return select_greater (
+      r,
+      0.0,
+      select_less (r, 1.0, Number (dry_restitution * r), Number (dry_restitution)),
+      Number (0.0));
 }
 
 std::unique_ptr<WetRestitution> create_wet_restitution (const std::string &name);

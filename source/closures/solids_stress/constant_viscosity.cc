@@ -1,0 +1,13 @@
+#include <wetbed/closures/solids_stress/constant_viscosity.h>
+#include <wetbed/core/parameters.h>
+
+namespace wetbed::closures
+{
+std::unique_ptr<SolidsStressModel>
+ConstantViscosityRheology::create (const SolidsStressSettings &settings)
+{
+  return std::make_unique<ConstantViscosityRheology> (
+      settings.stress.shear_viscosity,
+      johnson_jackson_coefficients (settings.stress, settings.physical));
+}
+} // namespace wetbed::closures
