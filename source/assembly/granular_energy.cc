@@ -376,11 +376,12 @@ void TwoFluidSolver<dim>::assemble_granular_energy_boundary_terms (
     if (!face->at_boundary ())
       continue;
     const bool wall_face =
-        scratch.johnson_jackson_walls && boundary_ids.is_wall (face->boundary_id ());
+        scratch.johnson_jackson_walls && boundaries.is_wall (face->boundary_id ());
     // the slip is relative to a moving wall
-    const Tensor<1, dim> wall_motion = face->boundary_id () == boundary_ids.moving_wall
-                                           ? scratch.wall_velocity
-                                           : Tensor<1, dim> ();
+    const Tensor<1, dim> wall_motion =
+        boundaries.is (face->boundary_id (), BoundaryType::moving_wall)
+            ? scratch.wall_velocity
+            : Tensor<1, dim> ();
     if (scratch.manufactured_theta)
     {
       theta_face.reinit (cell, face);

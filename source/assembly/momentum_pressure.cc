@@ -20,7 +20,7 @@ void TwoFluidSolver<dim>::setup_flow_assembler ()
   flow_assembler = std::make_unique<FlowAssembler<dim>> (
       mapping, flow_dof_handler, alpha_dof_handler, closure_evaluator, material);
   FlowTermContext<dim> context{&parameters,
-                               boundary_ids,
+                               boundaries,
                                &closure_evaluator,
                                material,
                                moving_wall_velocity (),
@@ -30,7 +30,9 @@ void TwoFluidSolver<dim>::setup_flow_assembler ()
   // verification runs only: the manufactured solution's sources
   if (manufactured)
     flow_assembler->add_term (std::make_unique<ManufacturedSourceTerm<dim>> (
-        manufactured, boundary_ids.outlet, boundary_ids.wall));
+        manufactured,
+        boundaries.ids (BoundaryType::outlet),
+        boundaries.ids (BoundaryType::wall)));
 }
 
 /**

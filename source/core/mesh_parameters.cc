@@ -3,6 +3,8 @@
 
 #include <deal.II/base/utilities.h>
 
+#include <algorithm>
+
 namespace wetbed
 {
 using dealii::ParameterHandler;
@@ -23,13 +25,15 @@ void MeshParameters::declare_parameters (ParameterHandler &prm)
   prm.declare_entry ("inlet",
                      "inlet",
                      Anything (),
-                     "Physical group name of the gas inlet; empty: no inlet (a closed "
-                     "or periodic domain).");
+                     "Physical group name of the gas inlet, or a comma-separated list "
+                     "of names (several inlet groups, each with the inlet velocity); "
+                     "empty: no inlet (a closed or periodic domain).");
   prm.declare_entry ("outlet",
                      "outlet",
                      Anything (),
-                     "Physical group name of the outlet; empty: no outlet (then no "
-                     "inlet either; the pressure is fixed at one node).");
+                     "Physical group name of the outlet, or a comma-separated list of "
+                     "names (several traction-free outlet groups); empty: no outlet "
+                     "(then no inlet either; the pressure is fixed at one node).");
   prm.declare_entry ("periodic boundaries",
                      "",
                      Anything (),
@@ -40,7 +44,12 @@ void MeshParameters::declare_parameters (ParameterHandler &prm)
                      "y",
                      Selection ("x|y|z"),
                      "The axis along which the high group is the low group translated.");
-  prm.declare_entry ("wall", "wall", Anything (), "Physical group name of the walls.");
+  prm.declare_entry ("wall",
+                     "wall",
+                     Anything (),
+                     "Physical group name of the walls, or a comma-separated list of "
+                     "names (every group gets the wall conditions of `boundary "
+                     "conditions`).");
   prm.declare_entry ("cylindrical wall",
                      "false",
                      Bool (),
@@ -67,9 +76,9 @@ void MeshParameters::parse_parameters (ParameterHandler &prm)
   prm.enter_subsection ("mesh");
   file                       = prm.get ("file");
   initial_refinement         = prm.get_integer ("initial refinement");
-  inlet_name                 = prm.get ("inlet");
-  outlet_name                = prm.get ("outlet");
-  wall_name                  = prm.get ("wall");
+  const std::string inlet    = prm.get ("inlet");
+  const std::string outlet   = prm.get ("outlet");
+  const std::string wall     = prm.get ("wall");
   cylindrical_wall           = prm.get_bool ("cylindrical wall");
   mapping_degree             = prm.get_integer ("mapping degree");
   wall_face_weight           = prm.get_double ("wall face weight");
@@ -77,8 +86,28 @@ void MeshParameters::parse_parameters (ParameterHandler &prm)
   periodic_direction         = std::string ("xyz").find (prm.get ("periodic direction"));
   prm.leave_subsection ();
   require (!file.empty (), "mesh/file", "is empty");
-  require (!wall_name.empty (), "mesh/wall", "is empty");
-  require (!outlet_name.empty () || inlet_name.empty (),
+  // each group once, in one role
+  std::vector<std::string> named;
+  auto group_list = [&] (const std::string &value, const std::string &key)
+  {
+    const auto list = dealii::Utilities::split_string_list (value, ',');
+    for (const auto &name : list)
+    {
+      require (!name.empty (),
+               "mesh/" + key,
+               "has an empty physical group name in the list '" + value + "'");
+      require (std::find (named.begin (), named.end (), name) == named.end (),
+               "mesh/" + key,
+               "'" + name + "' is named twice (each group is one inlet, outlet or wall)");
+      named.push_back (name);
+    }
+    return list;
+  };
+  inlet_names  = group_list (inlet, "inlet");
+  outlet_names = group_list (outlet, "outlet");
+  wall_names   = group_list (wall, "wall");
+  require (!wall_names.empty (), "mesh/wall", "is empty");
+  require (!outlet_names.empty () || inlet_names.empty (),
            "mesh/outlet",
            "is empty, but an inlet needs an outlet for the gas to leave");
   const auto names = dealii::Utilities::split_string_list (periodic, ',');
@@ -91,7 +120,7 @@ void MeshParameters::parse_parameters (ParameterHandler &prm)
              "mesh/periodic boundaries",
              "needs two different physical group names (got '" + periodic + "')");
     for (const auto &name : names)
-      require (name != wall_name && name != inlet_name && name != outlet_name,
+      require (std::find (named.begin (), named.end (), name) == named.end (),
                "mesh/periodic boundaries",
                "'" + name + "' is already the inlet, outlet or wall");
     periodic_low_name  = names[0];

@@ -72,12 +72,12 @@ std::string resolve_path (const std::string &file, const std::string &directory)
 }
 
 template <int dim>
-BoundaryIds read_mesh (const MeshParameters       &parameters,
-                       const std::string          &moving_wall_name,
-                       const std::string          &parameter_directory,
-                       const std::string          &output_folder,
-                       const dealii::Tensor<1, 3> &gravity,
-                       dealii::parallel::distributed::Triangulation<dim> &triangulation)
+Boundaries read_mesh (const MeshParameters       &parameters,
+                      const std::string          &moving_wall_name,
+                      const std::string          &parameter_directory,
+                      const std::string          &output_folder,
+                      const dealii::Tensor<1, 3> &gravity,
+                      dealii::parallel::distributed::Triangulation<dim> &triangulation)
 {
   const std::string file = resolve_path (parameters.file, parameter_directory);
   require (std::filesystem::is_regular_file (file),
@@ -99,26 +99,41 @@ BoundaryIds read_mesh (const MeshParameters       &parameters,
              "physical group '" + name + "' is not in the mesh '" + msh + "'");
     return static_cast<dealii::types::boundary_id> (it->second);
   };
-  BoundaryIds ids;
-  if (!parameters.inlet_name.empty ())
-    ids.inlet = id_of (parameters.inlet_name, "mesh/inlet");
-  if (!parameters.outlet_name.empty ())
-    ids.outlet = id_of (parameters.outlet_name, "mesh/outlet");
-  ids.wall = id_of (parameters.wall_name, "mesh/wall");
+  Boundaries ids;
+  auto       add = [&] (const std::string &name,
+                  const BoundaryType type,
+                  const std::string &parameter,
+                  const std::string &taken)
+  {
+    const auto id = id_of (name, parameter);
+    require (ids.find (id) == nullptr, parameter, "'" + name + "' " + taken);
+    ids.add (name, type, id);
+    return id;
+  };
+  const std::string twice = "is named twice (each group is one inlet, outlet or wall)";
+  for (const auto &name : parameters.inlet_names)
+    add (name, BoundaryType::inlet, "mesh/inlet", twice);
+  for (const auto &name : parameters.outlet_names)
+    add (name, BoundaryType::outlet, "mesh/outlet", twice);
+  for (const auto &name : parameters.wall_names)
+    add (name, BoundaryType::wall, "mesh/wall", twice);
   if (!parameters.periodic_low_name.empty ())
   {
-    ids.periodic_low  = id_of (parameters.periodic_low_name, "mesh/periodic boundaries");
-    ids.periodic_high = id_of (parameters.periodic_high_name, "mesh/periodic boundaries");
+    const std::string taken = "is already the inlet, outlet or wall";
+    add (parameters.periodic_low_name,
+         BoundaryType::periodic_low,
+         "mesh/periodic boundaries",
+         taken);
+    add (parameters.periodic_high_name,
+         BoundaryType::periodic_high,
+         "mesh/periodic boundaries",
+         taken);
   }
   if (!moving_wall_name.empty ())
-  {
-    ids.moving_wall = id_of (moving_wall_name, "boundary conditions/moving wall");
-    require (ids.moving_wall != ids.wall && ids.moving_wall != ids.inlet &&
-                 ids.moving_wall != ids.outlet && ids.moving_wall != ids.periodic_low &&
-                 ids.moving_wall != ids.periodic_high,
-             "boundary conditions/moving wall",
-             "'" + moving_wall_name + "' is already another boundary of the case");
-  }
+    add (moving_wall_name,
+         BoundaryType::moving_wall,
+         "boundary conditions/moving wall",
+         "is already another boundary of the case");
 
   dealii::GridIn<dim> grid_in (triangulation);
   std::ifstream       in (msh);
@@ -140,15 +155,18 @@ BoundaryIds read_mesh (const MeshParameters       &parameters,
       const auto           box  = dealii::GridTools::compute_bounding_box (triangulation);
       const dealii::Point<3> centre = box.center ();
       triangulation.set_all_manifold_ids (2);
-      triangulation.set_all_manifold_ids_on_boundary (ids.wall, 1);
+      for (const auto wall : ids.ids (BoundaryType::wall))
+        triangulation.set_all_manifold_ids_on_boundary (wall, 1);
       triangulation.set_manifold (1, dealii::CylindricalManifold<3> (axis, centre));
       dealii::TransfiniteInterpolationManifold<3> transfinite;
       transfinite.initialize (triangulation);
       triangulation.set_manifold (2, transfinite);
     }
   }
-  if (ids.periodic_low != BoundaryIds::none)
+  if (ids.has (BoundaryType::periodic_low))
   {
+    const auto periodic_low  = ids.id_of (BoundaryType::periodic_low),
+               periodic_high = ids.id_of (BoundaryType::periodic_high);
     std::vector<dealii::GridTools::PeriodicFacePair<
         typename dealii::parallel::distributed::Triangulation<dim>::cell_iterator>>
                       pairs;
@@ -158,8 +176,8 @@ BoundaryIds read_mesh (const MeshParameters       &parameters,
     try
     {
       dealii::GridTools::collect_periodic_faces (triangulation,
-                                                 ids.periodic_low,
-                                                 ids.periodic_high,
+                                                 periodic_low,
+                                                 periodic_high,
                                                  parameters.periodic_direction,
                                                  pairs);
     }
@@ -170,7 +188,7 @@ BoundaryIds read_mesh (const MeshParameters       &parameters,
     std::size_t low_faces = 0;
     for (const auto &cell : triangulation.active_cell_iterators ())
       for (const auto &face : cell->face_iterators ())
-        low_faces += face->at_boundary () && face->boundary_id () == ids.periodic_low;
+        low_faces += face->at_boundary () && face->boundary_id () == periodic_low;
     require (parameters.periodic_direction < dim && !pairs.empty () &&
                  pairs.size () == low_faces,
              "mesh/periodic boundaries",
@@ -183,16 +201,16 @@ BoundaryIds read_mesh (const MeshParameters       &parameters,
   return ids;
 }
 
-template BoundaryIds read_mesh<2> (const MeshParameters &,
-                                   const std::string &,
-                                   const std::string &,
-                                   const std::string &,
-                                   const dealii::Tensor<1, 3> &,
-                                   dealii::parallel::distributed::Triangulation<2> &);
-template BoundaryIds read_mesh<3> (const MeshParameters &,
-                                   const std::string &,
-                                   const std::string &,
-                                   const std::string &,
-                                   const dealii::Tensor<1, 3> &,
-                                   dealii::parallel::distributed::Triangulation<3> &);
+template Boundaries read_mesh<2> (const MeshParameters &,
+                                  const std::string &,
+                                  const std::string &,
+                                  const std::string &,
+                                  const dealii::Tensor<1, 3> &,
+                                  dealii::parallel::distributed::Triangulation<2> &);
+template Boundaries read_mesh<3> (const MeshParameters &,
+                                  const std::string &,
+                                  const std::string &,
+                                  const std::string &,
+                                  const dealii::Tensor<1, 3> &,
+                                  dealii::parallel::distributed::Triangulation<3> &);
 } // namespace wetbed

@@ -43,12 +43,13 @@ MonitorRow TwoFluidSolver<dim>::evaluate_monitors () const
   for (const auto &cell : flow_dof_handler.active_cell_iterators ())
     if (cell->is_locally_owned ())
       for (const auto &face : cell->face_iterators ())
-        if (face->at_boundary () && (face->boundary_id () == boundary_ids.inlet ||
-                                     face->boundary_id () == boundary_ids.outlet))
+        if (face->at_boundary () &&
+            (boundaries.is (face->boundary_id (), BoundaryType::inlet) ||
+             boundaries.is (face->boundary_id (), BoundaryType::outlet)))
         {
           face_values.reinit (cell, face);
           face_values[pressure].get_function_values (flow_solution, p);
-          const bool inlet = face->boundary_id () == boundary_ids.inlet;
+          const bool inlet = boundaries.is (face->boundary_id (), BoundaryType::inlet);
           for (unsigned int q = 0; q < face_quadrature.size (); ++q)
           {
             (inlet ? inlet_integral : outlet_integral) += p[q] * face_values.JxW (q);
@@ -175,10 +176,10 @@ void TwoFluidSolver<dim>::make_bubble_analysis ()
   BubbleCriteria criteria;
   criteria.gas_fraction_threshold = parameters.bubble_analysis.gas_fraction_threshold;
   criteria.minimum_diameter       = parameters.bubble_analysis.minimum_diameter;
-  criteria.freeboard_boundaries   = {boundary_ids.outlet};
-  criteria.open_boundaries        = {boundary_ids.inlet, boundary_ids.outlet};
-  unsigned int         vertical   = 0; // the axis gravity points along
-  const Tensor<1, dim> up         = upward_direction<dim> (parameters.physical.gravity);
+  criteria.freeboard_boundaries   = boundaries.ids (BoundaryType::outlet);
+  criteria.open_boundaries = boundaries.ids ({BoundaryType::inlet, BoundaryType::outlet});
+  unsigned int         vertical = 0; // the axis gravity points along
+  const Tensor<1, dim> up       = upward_direction<dim> (parameters.physical.gravity);
   for (unsigned int d = 1; d < dim; ++d)
     if (std::abs (up[d]) > std::abs (up[vertical]))
       vertical = d;

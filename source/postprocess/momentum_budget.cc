@@ -115,8 +115,9 @@ TwoFluidSolver<dim>::evaluate_inertial_budget (const double dt) const
       }
       for (const auto &face : cell->face_iterators ())
       {
-        if (!face->at_boundary () || (face->boundary_id () != boundary_ids.inlet &&
-                                      face->boundary_id () != boundary_ids.outlet))
+        if (!face->at_boundary () ||
+            !(boundaries.is (face->boundary_id (), BoundaryType::inlet) ||
+              boundaries.is (face->boundary_id (), BoundaryType::outlet)))
           continue;
         flow_face.reinit (cell, face);
         alpha_face.reinit (alpha_cell, face);

@@ -62,9 +62,10 @@ TwoFluidSolver<dim>::evaluate_wall_forces () const
       {
         if (!face->at_boundary ())
           continue;
-        const auto id   = face->boundary_id ();
-        const bool wall = boundary_ids.is_wall (id), inlet = id == boundary_ids.inlet,
-                   outlet = id == boundary_ids.outlet;
+        const auto id     = face->boundary_id ();
+        const bool wall   = boundaries.is_wall (id),
+                   inlet  = boundaries.is (id, BoundaryType::inlet),
+                   outlet = boundaries.is (id, BoundaryType::outlet);
         if (!wall && !inlet && !outlet)
           continue;
         flow_values.reinit (cell, face);
@@ -102,9 +103,9 @@ TwoFluidSolver<dim>::evaluate_wall_forces () const
                                               kinetic_theory->radial_distribution (a_s),
                                               std::max (theta_q[q], 0.0))
                                           : bc.solids_wall_friction;
-            Tensor<1, dim> slip =
-                u_s[q] -
-                (id == boundary_ids.moving_wall ? wall_velocity : Tensor<1, dim> ());
+            Tensor<1, dim> slip = u_s[q] - (boundaries.is (id, BoundaryType::moving_wall)
+                                                ? wall_velocity
+                                                : Tensor<1, dim> ());
             slip -= (slip * n) * n;
             forces.solids_wall += -friction * (slip * up) * JxW;
           }

@@ -187,8 +187,8 @@ void TwoFluidSolver<dim>::adapt_mesh ()
 template <int dim>
 void TwoFluidSolver<dim>::connect_load_balancing ()
 {
-  const BoundaryIds ids = boundary_ids;
-  cell_weights          = connect_cell_weights<dim> (triangulation,
+  const Boundaries ids = boundaries;
+  cell_weights         = connect_cell_weights<dim> (triangulation,
                                             parameters.mesh.wall_face_weight,
                                             [ids] (const types::boundary_id id)
                                             { return ids.is_wall (id); });

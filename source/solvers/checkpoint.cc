@@ -212,12 +212,12 @@ void TwoFluidSolver<dim>::resume_from_checkpoint ()
   // the coarse mesh of the case, then the saved refinement and partition
   MeshParameters coarse     = parameters.mesh;
   coarse.initial_refinement = 0;
-  boundary_ids              = read_mesh<dim> (coarse,
-                                 parameters.boundary.moving_wall_name,
-                                 parameters.parameter_file_directory,
-                                 output,
-                                 parameters.physical.gravity,
-                                 triangulation);
+  boundaries                = read_mesh<dim> (coarse,
+                               parameters.boundary.moving_wall_name,
+                               parameters.parameter_file_directory,
+                               output,
+                               parameters.physical.gravity,
+                               triangulation);
   make_bubble_analysis ();
   try
   {

@@ -85,12 +85,17 @@ void TwoFluidSolver<dim>::setup_dofs ()
   }
   {
     std::vector<bool> velocity (2 * dim + 1, true);
-    velocity[2 * dim]                         = false;
-    const std::set<types::boundary_id> ids[3] = {
-        {boundary_ids.inlet}, boundary_ids.walls (), {boundary_ids.outlet}};
+    velocity[2 * dim] = false;
+    // the momentum budget's parts: every inlet, every wall, every outlet group
+    const std::set<types::boundary_id> ids[3] = {boundaries.ids (BoundaryType::inlet),
+                                                 boundaries.walls (),
+                                                 boundaries.ids (BoundaryType::outlet)};
     for (unsigned int b = 0; b < 3; ++b)
-      boundary_velocity_dofs[b] = DoFTools::extract_boundary_dofs (
-          flow_dof_handler, ComponentMask (velocity), ids[b]);
+      // (an empty set would mean every boundary to extract_boundary_dofs)
+      boundary_velocity_dofs[b] =
+          ids[b].empty () ? IndexSet (flow_dof_handler.n_dofs ())
+                          : DoFTools::extract_boundary_dofs (
+                                flow_dof_handler, ComponentMask (velocity), ids[b]);
   }
   flow_rhs.reinit (flow_owned, communicator);
   flow_solution.reinit (flow_owned, flow_relevant, communicator);
@@ -152,7 +157,7 @@ void TwoFluidSolver<dim>::measure_mesh ()
       h = std::min (h, cell->minimum_vertex_distance ());
       for (const auto f : cell->face_indices ())
         if (cell->face (f)->at_boundary () &&
-            cell->face (f)->boundary_id () == boundary_ids.moving_wall)
+            boundaries.is (cell->face (f)->boundary_id (), BoundaryType::moving_wall))
         {
           face_values.reinit (cell, f);
           for (const auto &n : face_values.get_normal_vectors ())
@@ -179,7 +184,7 @@ void TwoFluidSolver<dim>::report_mesh (
   if (!initialized && Utilities::MPI::n_mpi_processes (communicator) > 1)
   {
     unsigned int                                   cells = 0, wall_faces = 0;
-    const auto                                     ids = boundary_ids;
+    const auto                                     ids = boundaries;
     const std::function<bool (types::boundary_id)> is_wall =
         [ids] (const types::boundary_id id) { return ids.is_wall (id); };
     for (const auto &cell : triangulation.active_cell_iterators ())
@@ -204,19 +209,20 @@ void TwoFluidSolver<dim>::make_mesh_constraints (
     const DoFHandler<dim> &dof_handler, AffineConstraints<double> &constraints) const
 {
   DoFTools::make_hanging_node_constraints (dof_handler, constraints);
-  if (boundary_ids.periodic_low != BoundaryIds::none)
-    DoFTools::make_periodicity_constraints (dof_handler,
-                                            boundary_ids.periodic_low,
-                                            boundary_ids.periodic_high,
-                                            parameters.mesh.periodic_direction,
-                                            constraints);
+  if (boundaries.has (BoundaryType::periodic_low))
+    DoFTools::make_periodicity_constraints (
+        dof_handler,
+        boundaries.id_of (BoundaryType::periodic_low),
+        boundaries.id_of (BoundaryType::periodic_high),
+        parameters.mesh.periodic_direction,
+        constraints);
 }
 
 template <int dim>
 Tensor<1, dim> TwoFluidSolver<dim>::moving_wall_velocity () const
 {
   Tensor<1, dim> velocity;
-  if (boundary_ids.moving_wall != BoundaryIds::none)
+  if (boundaries.has (BoundaryType::moving_wall))
     for (unsigned int d = 0; d < dim; ++d)
       velocity[d] = parameters.boundary.moving_wall_velocity[d];
   return velocity;

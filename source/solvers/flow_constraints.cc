@@ -9,6 +9,27 @@ namespace wetbed
 {
 using namespace dealii;
 
+namespace
+{
+/** `function` on every boundary id of `ids` (nothing if `ids` is empty). */
+template <int dim>
+void interpolate_on (const Mapping<dim>                 &mapping,
+                     const DoFHandler<dim>              &dof_handler,
+                     const std::set<types::boundary_id> &ids,
+                     const Function<dim>                &function,
+                     AffineConstraints<double>          &constraints,
+                     const ComponentMask                &mask)
+{
+  if (ids.empty ())
+    return;
+  std::map<types::boundary_id, const Function<dim> *> functions;
+  for (const auto id : ids)
+    functions[id] = &function;
+  VectorTools::interpolate_boundary_values (
+      mapping, dof_handler, functions, constraints, mask);
+}
+} // namespace
+
 /**
  * Constraints of the flow system at time `at_time`: hanging nodes; slip walls (strong
  * no-normal-flux unless Nitsche imposes it in the assembly) or no-slip walls; a held
@@ -20,7 +41,7 @@ template <int dim>
 void TwoFluidSolver<dim>::make_flow_constraints (const double at_time)
 {
   const IndexSet relevant = DoFTools::extract_locally_relevant_dofs (flow_dof_handler);
-  const auto    &ids      = boundary_ids;
+  const auto    &ids      = boundaries;
   const auto    &bc       = parameters.boundary;
   const ComponentMask solids_mask =
       flow_fe.component_mask (FEValuesExtractors::Vector (dim));
@@ -40,10 +61,19 @@ void TwoFluidSolver<dim>::make_flow_constraints (const double at_time)
     const ManufacturedFlowFunction<dim> exact (*manufactured);
     ComponentMask                       velocities (2 * dim + 1, true);
     velocities.set (2 * dim, false);
-    for (const auto id : {ids.wall, ids.inlet})
-      if (id != ids.wall || !manufactured->slip_walls ())
-        VectorTools::interpolate_boundary_values (
-            mapping, flow_dof_handler, id, exact, flow_constraints, velocities);
+    if (!manufactured->slip_walls ())
+      interpolate_on (mapping,
+                      flow_dof_handler,
+                      ids.ids (BoundaryType::wall),
+                      exact,
+                      flow_constraints,
+                      velocities);
+    interpolate_on (mapping,
+                    flow_dof_handler,
+                    ids.ids (BoundaryType::inlet),
+                    exact,
+                    flow_constraints,
+                    velocities);
   }
   else
   {
@@ -53,15 +83,13 @@ void TwoFluidSolver<dim>::make_flow_constraints (const double at_time)
     constrain_walls ();
     constrain_inlet_gas (at_time);
     // solids are held at the distributor and retained at the outlet (a grid)
-    for (const auto id : {ids.inlet, ids.outlet})
-      if (id != BoundaryIds::none)
-        VectorTools::interpolate_boundary_values (
-            mapping,
-            flow_dof_handler,
-            id,
-            Functions::ZeroFunction<dim> (2 * dim + 1),
-            flow_constraints,
-            solids_mask);
+    for (const auto type : {BoundaryType::inlet, BoundaryType::outlet})
+      interpolate_on (mapping,
+                      flow_dof_handler,
+                      ids.ids (type),
+                      Functions::ZeroFunction<dim> (2 * dim + 1),
+                      flow_constraints,
+                      solids_mask);
   }
   const types::global_dof_index pinned = pin_pressure (relevant);
   flow_constraints.close ();
@@ -71,7 +99,7 @@ void TwoFluidSolver<dim>::make_flow_constraints (const double at_time)
 template <int dim>
 void TwoFluidSolver<dim>::constrain_walls ()
 {
-  const auto         &ids      = boundary_ids;
+  const auto         &ids      = boundaries;
   const auto         &bc       = parameters.boundary;
   const ComponentMask gas_mask = flow_fe.component_mask (FEValuesExtractors::Vector (0));
   const ComponentMask solids_mask =
@@ -88,21 +116,18 @@ void TwoFluidSolver<dim>::constrain_walls ()
   {
     if (condition == WallCondition::no_slip)
     {
-      VectorTools::interpolate_boundary_values (
-          mapping,
-          flow_dof_handler,
-          ids.wall,
-          Functions::ZeroFunction<dim> (2 * dim + 1),
-          flow_constraints,
-          mask);
-      if (ids.moving_wall != BoundaryIds::none)
-        VectorTools::interpolate_boundary_values (
-            mapping,
-            flow_dof_handler,
-            ids.moving_wall,
-            Functions::ConstantFunction<dim> (wall_motion),
-            flow_constraints,
-            mask);
+      interpolate_on (mapping,
+                      flow_dof_handler,
+                      ids.ids (BoundaryType::wall),
+                      Functions::ZeroFunction<dim> (2 * dim + 1),
+                      flow_constraints,
+                      mask);
+      interpolate_on (mapping,
+                      flow_dof_handler,
+                      ids.ids (BoundaryType::moving_wall),
+                      Functions::ConstantFunction<dim> (wall_motion),
+                      flow_constraints,
+                      mask);
     }
     else if (!bc.nitsche)
       VectorTools::compute_no_normal_flux_constraints (
@@ -158,7 +183,7 @@ void TwoFluidSolver<dim>::constrain_inlet_gas (const double at_time)
     if ((cell->is_locally_owned () || cell->is_ghost ()) && cell->at_boundary ())
       for (const unsigned int f : cell->face_indices ())
         if (cell->face (f)->at_boundary () &&
-            cell->face (f)->boundary_id () == boundary_ids.inlet)
+            boundaries.is (cell->face (f)->boundary_id (), BoundaryType::inlet))
         {
           alpha_at_nodes.reinit (alpha_cell);
           alpha_at_nodes.get_function_values (alpha, alpha_values);
@@ -184,7 +209,7 @@ types::global_dof_index TwoFluidSolver<dim>::pin_pressure (const IndexSet &relev
   // without an outlet (a closed or periodic domain) p' is fixed to 0 at one node: the
   // first pressure dof that is not a periodic or hanging copy of another
   types::global_dof_index pinned = numbers::invalid_dof_index;
-  if (boundary_ids.outlet != BoundaryIds::none)
+  if (boundaries.has (BoundaryType::outlet))
     return pinned;
   const IndexSet &pressure_owned = flow_owned[1];
   const auto      offset         = flow_owned[0].size ();
@@ -211,13 +236,13 @@ void TwoFluidSolver<dim>::make_schur_constraints (const IndexSet               &
   make_mesh_constraints (flow_dof_handler, schur_constraints);
   ComponentMask pressure_mask (2 * dim + 1, false);
   pressure_mask.set (2 * dim, true);
-  if (boundary_ids.outlet != BoundaryIds::none)
-    VectorTools::interpolate_boundary_values (mapping,
-                                              flow_dof_handler,
-                                              boundary_ids.outlet,
-                                              Functions::ZeroFunction<dim> (2 * dim + 1),
-                                              schur_constraints,
-                                              pressure_mask);
+  if (boundaries.has (BoundaryType::outlet))
+    interpolate_on (mapping,
+                    flow_dof_handler,
+                    boundaries.ids (BoundaryType::outlet),
+                    Functions::ZeroFunction<dim> (2 * dim + 1),
+                    schur_constraints,
+                    pressure_mask);
   else if (relevant.is_element (pinned))
     schur_constraints.add_line (pinned);
   schur_constraints.close ();

@@ -105,12 +105,12 @@ void TwoFluidSolver<dim>::initialize ()
     resume_from_checkpoint ();
   else
   {
-    boundary_ids = read_mesh<dim> (parameters.mesh,
-                                   parameters.boundary.moving_wall_name,
-                                   parameters.parameter_file_directory,
-                                   folder,
-                                   parameters.physical.gravity,
-                                   triangulation);
+    boundaries = read_mesh<dim> (parameters.mesh,
+                                 parameters.boundary.moving_wall_name,
+                                 parameters.parameter_file_directory,
+                                 folder,
+                                 parameters.physical.gravity,
+                                 triangulation);
     connect_load_balancing ();
     make_bubble_analysis ();
     setup_dofs ();

@@ -59,13 +59,56 @@ inline constexpr bool is_vectorized_v = NumberTraits<Number>::is_vectorized;
  * in the lanes it is not chosen for is harmless (no floating-point traps). Number is
  * the type of `a`: pass a Number, not a Sacado expression.
  */
+/** `a OP b ? if_true : if_false` for double and ADNumber (OP a SIMDComparison). */
+template <dealii::SIMDComparison op, typename Number>
+Number select (const Number                &a,
+               const non_deduced_t<Number> &b,
+               const non_deduced_t<Number> &if_true,
+               const non_deduced_t<Number> &if_false)
+{
+  bool holds = false;
+  switch (op)
+  {
+  case dealii::SIMDComparison::less_than:
+    holds = a < b;
+    break;
+  case dealii::SIMDComparison::less_than_or_equal:
+    holds = a <= b;
+    break;
+  case dealii::SIMDComparison::greater_than:
+    holds = a > b;
+    break;
+  case dealii::SIMDComparison::greater_than_or_equal:
+    holds = a >= b;
+    break;
+  case dealii::SIMDComparison::equal:
+    holds = a == b;
+    break;
+  case dealii::SIMDComparison::not_equal:
+    holds = a != b;
+    break;
+  }
+  return holds ? if_true : if_false;
+}
+
+/** The same lane by lane for VectorizedArray (compare_and_apply_mask). */
+template <dealii::SIMDComparison op, typename Scalar, std::size_t width>
+dealii::VectorizedArray<Scalar, width>
+select (const dealii::VectorizedArray<Scalar, width>                &a,
+        const non_deduced_t<dealii::VectorizedArray<Scalar, width>> &b,
+        const non_deduced_t<dealii::VectorizedArray<Scalar, width>> &if_true,
+        const non_deduced_t<dealii::VectorizedArray<Scalar, width>> &if_false)
+{
+  return dealii::compare_and_apply_mask<op> (a, b, if_true, if_false);
+}
+
 template <typename Number>
 Number select_less (const Number                &a,
                     const non_deduced_t<Number> &b,
                     const non_deduced_t<Number> &if_true,
                     const non_deduced_t<Number> &if_false)
 {
-  return a < b ? if_true : if_false;
+  return select<dealii::SIMDComparison::less_than> (a, b, if_true, if_false);
 }
 
 template <typename Number>
@@ -74,7 +117,7 @@ Number select_less_equal (const Number                &a,
                           const non_deduced_t<Number> &if_true,
                           const non_deduced_t<Number> &if_false)
 {
-  return a <= b ? if_true : if_false;
+  return select<dealii::SIMDComparison::less_than_or_equal> (a, b, if_true, if_false);
 }
 
 template <typename Number>
@@ -83,7 +126,7 @@ Number select_greater (const Number                &a,
                        const non_deduced_t<Number> &if_true,
                        const non_deduced_t<Number> &if_false)
 {
-  return a > b ? if_true : if_false;
+  return select<dealii::SIMDComparison::greater_than> (a, b, if_true, if_false);
 }
 
 template <typename Number>
@@ -92,51 +135,7 @@ Number select_greater_equal (const Number                &a,
                              const non_deduced_t<Number> &if_true,
                              const non_deduced_t<Number> &if_false)
 {
-  return a >= b ? if_true : if_false;
-}
-
-template <typename Scalar, std::size_t width>
-dealii::VectorizedArray<Scalar, width>
-select_less (const dealii::VectorizedArray<Scalar, width>                &a,
-             const non_deduced_t<dealii::VectorizedArray<Scalar, width>> &b,
-             const non_deduced_t<dealii::VectorizedArray<Scalar, width>> &if_true,
-             const non_deduced_t<dealii::VectorizedArray<Scalar, width>> &if_false)
-{
-  return dealii::compare_and_apply_mask<dealii::SIMDComparison::less_than> (
-      a, b, if_true, if_false);
-}
-
-template <typename Scalar, std::size_t width>
-dealii::VectorizedArray<Scalar, width>
-select_less_equal (const dealii::VectorizedArray<Scalar, width>                &a,
-                   const non_deduced_t<dealii::VectorizedArray<Scalar, width>> &b,
-                   const non_deduced_t<dealii::VectorizedArray<Scalar, width>> &if_true,
-                   const non_deduced_t<dealii::VectorizedArray<Scalar, width>> &if_false)
-{
-  return dealii::compare_and_apply_mask<dealii::SIMDComparison::less_than_or_equal> (
-      a, b, if_true, if_false);
-}
-
-template <typename Scalar, std::size_t width>
-dealii::VectorizedArray<Scalar, width>
-select_greater (const dealii::VectorizedArray<Scalar, width>                &a,
-                const non_deduced_t<dealii::VectorizedArray<Scalar, width>> &b,
-                const non_deduced_t<dealii::VectorizedArray<Scalar, width>> &if_true,
-                const non_deduced_t<dealii::VectorizedArray<Scalar, width>> &if_false)
-{
-  return dealii::compare_and_apply_mask<dealii::SIMDComparison::greater_than> (
-      a, b, if_true, if_false);
-}
-
-template <typename Scalar, std::size_t width>
-dealii::VectorizedArray<Scalar, width> select_greater_equal (
-    const dealii::VectorizedArray<Scalar, width>                &a,
-    const non_deduced_t<dealii::VectorizedArray<Scalar, width>> &b,
-    const non_deduced_t<dealii::VectorizedArray<Scalar, width>> &if_true,
-    const non_deduced_t<dealii::VectorizedArray<Scalar, width>> &if_false)
-{
-  return dealii::compare_and_apply_mask<dealii::SIMDComparison::greater_than_or_equal> (
-      a, b, if_true, if_false);
+  return select<dealii::SIMDComparison::greater_than_or_equal> (a, b, if_true, if_false);
 }
 
 /**

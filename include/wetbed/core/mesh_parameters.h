@@ -3,6 +3,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <string>
+#include <vector>
 
 namespace wetbed
 {
@@ -11,7 +12,8 @@ struct MeshParameters
 {
   std::string  file;               // .geo (meshed with gmsh at start) or .msh
   unsigned int initial_refinement; // uniform refinements after reading
-  std::string  inlet_name, outlet_name, wall_name; // inlet/outlet empty: none
+  // physical-group names of the inlets, outlets and walls; inlets/outlets empty: none
+  std::vector<std::string> inlet_names, outlet_names, wall_names;
   // two physical groups whose faces are identified, low and high; empty: none
   std::string  periodic_low_name, periodic_high_name;
   unsigned int periodic_direction; // 0, 1, 2: the axis from the low to the high group

@@ -289,7 +289,7 @@ private:
   mutable dealii::TimerOutput timer;
 
   PartitionIndependentTriangulation<dim> triangulation;
-  BoundaryIds                            boundary_ids;
+  Boundaries                             boundaries;
   // the partition's cost model (mesh/wall face weight); unconnected: balance by count
   boost::signals2::scoped_connection cell_weights;
   dealii::MappingQ<dim>              mapping;

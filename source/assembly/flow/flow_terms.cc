@@ -17,10 +17,10 @@ namespace wetbed
 template <int dim>
 void add_flow_terms (FlowAssembler<dim> &assembler, const FlowTermContext<dim> &context)
 {
-  const Parameters  &p  = *context.parameters;
-  const auto        &bc = p.boundary;
-  const BoundaryIds &id = context.boundary_ids;
-  const auto        &m  = context.material;
+  const Parameters &p  = *context.parameters;
+  const auto       &bc = p.boundary;
+  const Boundaries &id = context.boundaries;
+  const auto       &m  = context.material;
 
   assembler.add_term (std::make_unique<InertiaTerm<dim>> (m, p.conservative_momentum));
   assembler.add_term (std::make_unique<DragCouplingTerm<dim>> ());
@@ -35,13 +35,13 @@ void add_flow_terms (FlowAssembler<dim> &assembler, const FlowTermContext<dim> &
       context.slip_walls)
     assembler.add_term (std::make_unique<WallFrictionTerm<dim>> (
         id.walls (),
-        id.moving_wall,
+        id.ids (BoundaryType::moving_wall),
         context.moving_wall_velocity,
         bc.solids_wall_friction,
         johnson_jackson ? context.closures->kinetic_theory () : nullptr));
   const std::array<bool, 2> nitsche = {
-      context.slip_walls && bc.nitsche && bc.gas_wall != WallCondition::no_slip,
-      context.slip_walls && bc.nitsche && bc.solids_wall != WallCondition::no_slip};
+      {context.slip_walls && bc.nitsche && bc.gas_wall != WallCondition::no_slip,
+       context.slip_walls && bc.nitsche && bc.solids_wall != WallCondition::no_slip}};
   if (nitsche[0] || nitsche[1])
     assembler.add_term (std::make_unique<NitscheWallTerm<dim>> (
         id.walls (),
@@ -50,8 +50,8 @@ void add_flow_terms (FlowAssembler<dim> &assembler, const FlowTermContext<dim> &
         m,
         *context.closures));
   if (p.stabilization)
-    assembler.add_term (
-        std::make_unique<OutletBackflowTerm<dim>> (id.outlet, m.gas_density));
+    assembler.add_term (std::make_unique<OutletBackflowTerm<dim>> (
+        id.ids (BoundaryType::outlet), m.gas_density));
 }
 
 template void add_flow_terms (FlowAssembler<2> &, const FlowTermContext<2> &);

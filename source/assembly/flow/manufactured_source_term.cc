@@ -30,9 +30,9 @@ void ManufacturedSourceTerm<dim>::face (const typename FlowTerm<dim>::CellIterat
                                         const FlowAssemblyState<dim> &,
                                         FlowCellCopy &copy) const
 {
-  const auto        &fv     = s.face_values;
-  const unsigned int n_u    = s.indices.n_velocity_basis;
-  const bool         on_out = cell->face (face_number)->boundary_id () == outlet;
+  const auto        &fv  = s.face_values;
+  const unsigned int n_u = s.indices.n_velocity_basis;
+  const bool on_out      = outlets.count (cell->face (face_number)->boundary_id ()) > 0;
   for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
   {
     const dealii::Point<dim>    &x = fv.quadrature_point (q);

@@ -9,10 +9,10 @@ void WallFrictionTerm<dim>::face (const typename FlowTerm<dim>::CellIterator &ce
                                   const FlowAssemblyState<dim> &,
                                   FlowCellCopy &copy) const
 {
-  const auto        &fv     = s.face_values;
-  const unsigned int n_u    = s.indices.n_velocity_basis;
-  const bool         moving = cell->face (face_number)->boundary_id () == moving_wall;
-  const auto        &first  = s.indices.velocity[0];
+  const auto        &fv  = s.face_values;
+  const unsigned int n_u = s.indices.n_velocity_basis;
+  const bool  moving = moving_walls.count (cell->face (face_number)->boundary_id ()) > 0;
+  const auto &first  = s.indices.velocity[0];
   for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
   {
     const dealii::Tensor<1, dim> n = fv.normal_vector (q);

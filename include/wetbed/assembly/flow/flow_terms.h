@@ -11,7 +11,7 @@ template <int dim>
 struct FlowTermContext
 {
   const Parameters                 *parameters;
-  BoundaryIds                       boundary_ids;
+  Boundaries                        boundaries;
   const closures::ClosureEvaluator *closures;
   FlowMaterial<dim>                 material;
   dealii::Tensor<1, dim>            moving_wall_velocity;

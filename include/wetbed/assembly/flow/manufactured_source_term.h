@@ -4,6 +4,7 @@
 #include <wetbed/core/manufactured_solution.h>
 
 #include <memory>
+#include <set>
 
 namespace wetbed
 {
@@ -18,10 +19,11 @@ class ManufacturedSourceTerm : public FlowTerm<dim>
 {
 public:
   ManufacturedSourceTerm (std::shared_ptr<const ManufacturedSolution<dim>> solution,
-                          dealii::types::boundary_id                       outlet,
-                          dealii::types::boundary_id                       wall)
-      : solution (std::move (solution)), outlet (outlet),
-        wall (this->solution->slip_walls () ? wall : dealii::numbers::invalid_boundary_id)
+                          std::set<dealii::types::boundary_id>             outlets,
+                          std::set<dealii::types::boundary_id>             walls)
+      : solution (std::move (solution)), outlets (std::move (outlets)),
+        walls (this->solution->slip_walls () ? std::move (walls)
+                                             : std::set<dealii::types::boundary_id> ())
   {
   }
   std::string name () const override { return "manufactured sources"; }
@@ -30,7 +32,7 @@ public:
                     FlowCellCopy                 &copy) const override;
   bool        acts_on_boundary (dealii::types::boundary_id id) const override
   {
-    return id == outlet || id == wall;
+    return outlets.count (id) > 0 || walls.count (id) > 0;
   }
   void face (const typename FlowTerm<dim>::CellIterator &cell,
              unsigned int                                face_number,
@@ -40,6 +42,6 @@ public:
 
 private:
   std::shared_ptr<const ManufacturedSolution<dim>> solution;
-  dealii::types::boundary_id                       outlet, wall;
+  std::set<dealii::types::boundary_id>             outlets, walls;
 };
 } // namespace wetbed

@@ -2,6 +2,8 @@
 
 #include <wetbed/assembly/flow/flow_term.h>
 
+#include <set>
+
 namespace wetbed
 {
 /** Directional do-nothing on the outlet: gas flowing back in is treated as inflow,
@@ -10,14 +12,14 @@ template <int dim>
 class OutletBackflowTerm : public FlowTerm<dim>
 {
 public:
-  OutletBackflowTerm (dealii::types::boundary_id outlet, double gas_density)
-      : outlet (outlet), gas_density (gas_density)
+  OutletBackflowTerm (std::set<dealii::types::boundary_id> outlets, double gas_density)
+      : outlets (std::move (outlets)), gas_density (gas_density)
   {
   }
   std::string name () const override { return "outlet backflow"; }
   bool        acts_on_boundary (dealii::types::boundary_id id) const override
   {
-    return id == outlet;
+    return outlets.count (id) > 0;
   }
   void face (const typename FlowTerm<dim>::CellIterator &cell,
              unsigned int                                face_number,
@@ -26,7 +28,7 @@ public:
              FlowCellCopy                               &copy) const override;
 
 private:
-  dealii::types::boundary_id outlet;
-  double                     gas_density;
+  std::set<dealii::types::boundary_id> outlets;
+  double                               gas_density;
 };
 } // namespace wetbed

@@ -19,11 +19,11 @@ class WallFrictionTerm : public FlowTerm<dim>
 public:
   /** kinetic_theory: the Johnson-Jackson coefficient; null: the constant `friction`. */
   WallFrictionTerm (std::set<dealii::types::boundary_id> walls,
-                    dealii::types::boundary_id           moving_wall,
+                    std::set<dealii::types::boundary_id> moving_walls,
                     const dealii::Tensor<1, dim>        &wall_velocity,
                     double                               friction,
                     const closures::KineticTheory       *kinetic_theory)
-      : walls (std::move (walls)), moving_wall (moving_wall),
+      : walls (std::move (walls)), moving_walls (std::move (moving_walls)),
         wall_velocity (wall_velocity), friction (friction),
         kinetic_theory (kinetic_theory)
   {
@@ -44,7 +44,7 @@ public:
 
 private:
   std::set<dealii::types::boundary_id> walls;
-  dealii::types::boundary_id           moving_wall;
+  std::set<dealii::types::boundary_id> moving_walls; // a subset of walls
   dealii::Tensor<1, dim>               wall_velocity;
   double                               friction;
   const closures::KineticTheory       *kinetic_theory;
