@@ -1,3 +1,4 @@
+#include <wetbed/closures/closure_evaluator.h>
 #include <wetbed/closures/drag/drag_model.h>
 #include <wetbed/closures/kinetic_theory/kinetic_theory.h>
 #include <wetbed/closures/solids_stress/solids_stress_model.h>
@@ -117,7 +118,16 @@ void write_closure_table (const Parameters                &parameters,
                                                             parameters.physical,
                                                             parameters.kinetic_theory,
                                                             parameters.wet);
-  const closures::KineticTheory *theory = stress->kinetic_theory ();
+  const auto drag   = closures::create_drag_model (parameters.drag_model);
+  // the closures with the solver's input convention (doc/theory.md, "Closure inputs")
+  const closures::ClosureEvaluator evaluator (
+      *drag,
+      *stress,
+      {parameters.physical.gas_density,
+       parameters.physical.gas_viscosity,
+       parameters.physical.particle_diameter},
+      parameters.physical.residual_solids_fraction);
+  const closures::KineticTheory *theory = evaluator.kinetic_theory ();
   require (theory != nullptr,
            "solids stress/model",
            "wetbed closures reports the kinetic theory: set model = kinetic theory");
@@ -133,7 +143,7 @@ void write_closure_table (const Parameters                &parameters,
   for (const auto &p : points)
   {
     const auto c = theory->evaluate (p.alpha_s, p.theta);
-    const auto s = stress->evaluate ({p.alpha_s, p.theta, p.shear_rate});
+    const auto s = evaluator.stress (p.alpha_s, p.theta, p.shear_rate);
     out << p.alpha_s << ',' << p.theta << ',' << p.shear_rate << ',' << c.g0 << ','
         << s.kinetic_pressure << ',' << s.pressure << ',' << c.shear_viscosity << ','
         << c.collisional_viscosity << ',' << s.frictional_viscosity << ','
