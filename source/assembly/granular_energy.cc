@@ -103,8 +103,6 @@ struct TwoFluidSolver<dim>::GranularEnergyScratch
         t_old (n_q), t_old2 (n_q), ug (n_q), us (n_q), grad_us (n_q),
         a_face (face_quadrature.size ()), t_face (face_quadrature.size ()),
         us_face (face_quadrature.size ()), gas (0), solids (dim),
-        johnson_jackson_walls (solver.parameters.boundary.solids_wall ==
-                               WallCondition::johnson_jackson),
         wall_velocity (solver.moving_wall_velocity ()),
         manufactured_theta (solver.manufactured &&
                             solver.manufactured->has_granular_temperature ())
@@ -146,7 +144,6 @@ struct TwoFluidSolver<dim>::GranularEnergyScratch
   std::vector<double>                  a_face, t_face;
   std::vector<Tensor<1, dim>>          us_face;
   const FEValuesExtractors::Vector     gas, solids;
-  const bool                           johnson_jackson_walls;
   // verification runs: the manufactured volume and boundary sources
   const Tensor<1, dim> wall_velocity;
   const bool           manufactured_theta;
@@ -375,8 +372,9 @@ void TwoFluidSolver<dim>::assemble_granular_energy_boundary_terms (
   {
     if (!face->at_boundary ())
       continue;
-    const bool wall_face =
-        scratch.johnson_jackson_walls && boundaries.is_wall (face->boundary_id ());
+    const bool wall_face = boundaries.is_wall (face->boundary_id ()) &&
+                           wall_conditions.at (face->boundary_id (), Phase::solids)
+                               .has_granular_energy_flux ();
     // the slip is relative to a moving wall
     const Tensor<1, dim> wall_motion =
         boundaries.is (face->boundary_id (), BoundaryType::moving_wall)

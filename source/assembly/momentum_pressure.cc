@@ -7,7 +7,7 @@ namespace wetbed
 using namespace dealii;
 
 template <int dim>
-void TwoFluidSolver<dim>::setup_flow_assembler ()
+std::unique_ptr<FlowAssembler<dim>> TwoFluidSolver<dim>::make_flow_assembler () const
 {
   const auto       &pp = parameters.physical;
   FlowMaterial<dim> material{pp.gas_density,
@@ -17,22 +17,24 @@ void TwoFluidSolver<dim>::setup_flow_assembler ()
                              {}};
   for (unsigned int d = 0; d < dim; ++d)
     material.gravity[d] = pp.gravity[d];
-  flow_assembler = std::make_unique<FlowAssembler<dim>> (
+  auto assembler = std::make_unique<FlowAssembler<dim>> (
       mapping, flow_dof_handler, alpha_dof_handler, closure_evaluator, material);
   FlowTermContext<dim> context{&parameters,
                                boundaries,
+                               wall_conditions,
                                &closure_evaluator,
                                material,
                                moving_wall_velocity (),
                                flow_fe.degree,
                                !manufactured || manufactured->slip_walls ()};
-  add_flow_terms (*flow_assembler, context);
+  add_flow_terms (*assembler, context);
   // verification runs only: the manufactured solution's sources
   if (manufactured)
-    flow_assembler->add_term (std::make_unique<ManufacturedSourceTerm<dim>> (
+    assembler->add_term (std::make_unique<ManufacturedSourceTerm<dim>> (
         manufactured,
         boundaries.ids (BoundaryType::outlet),
         boundaries.ids (BoundaryType::wall)));
+  return assembler;
 }
 
 /**
@@ -43,14 +45,9 @@ template <int dim>
 void TwoFluidSolver<dim>::assemble_flow_system (const BDFCoefficients &bdf,
                                                 const double           dt)
 {
-  TimerOutput::Scope scope (timer, "flow assembly");
-  if (!flow_assembler)
-    setup_flow_assembler ();
-  // the volume fraction and flow state of this linearisation, for the momentum budget
-  // (copies of ghosted vectors: the ghost values come with them)
-  assembled_alpha = alpha;
-  assembled_flow  = flow_solution;
-  const FlowAssemblyState<dim>                          state{bdf,
+  if (!flow_system.has_assembler ())
+    flow_system.set_assembler (make_flow_assembler ());
+  const FlowAssemblyState<dim> state{bdf,
                                      dt,
                                      &flow_solution,
                                      &flow_old,
@@ -59,16 +56,13 @@ void TwoFluidSolver<dim>::assemble_flow_system (const BDFCoefficients &bdf,
                                      &alpha_old,
                                      &alpha_old2,
                                      &theta};
-  const typename FlowAssembler<dim>::BoundaryRowCapture capture{
-      &boundary_velocity_dofs,
-      upward_direction<dim> (parameters.physical.gravity),
-      &boundary_cell_systems};
-  flow_assembler->assemble (
-      state, flow_constraints, schur_constraints, flow_operator, flow_rhs, capture);
+  flow_system.assemble (state, flow_constraints, schur_constraints);
 }
 
-template void TwoFluidSolver<2>::setup_flow_assembler ();
-template void TwoFluidSolver<3>::setup_flow_assembler ();
+template std::unique_ptr<FlowAssembler<2>>
+TwoFluidSolver<2>::make_flow_assembler () const;
+template std::unique_ptr<FlowAssembler<3>>
+              TwoFluidSolver<3>::make_flow_assembler () const;
 template void TwoFluidSolver<2>::assemble_flow_system (const BDFCoefficients &, double);
 template void TwoFluidSolver<3>::assemble_flow_system (const BDFCoefficients &, double);
 } // namespace wetbed

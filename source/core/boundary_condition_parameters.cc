@@ -8,20 +8,6 @@ namespace wetbed
 using dealii::ParameterHandler;
 using namespace dealii::Patterns;
 
-namespace
-{
-WallCondition wall_condition_from_string (const std::string &name)
-{
-  if (name == "no-slip")
-    return WallCondition::no_slip;
-  if (name == "free-slip")
-    return WallCondition::free_slip;
-  if (name == "Johnson-Jackson")
-    return WallCondition::johnson_jackson;
-  return WallCondition::partial_slip;
-}
-} // namespace
-
 void BoundaryConditionParameters::declare_parameters (ParameterHandler &prm)
 {
   prm.enter_subsection ("boundary conditions");
@@ -32,20 +18,30 @@ void BoundaryConditionParameters::declare_parameters (ParameterHandler &prm)
       "Superficial gas velocity U at the inlet (m/s), a function of t; the "
       "gas enters at U/alpha_g with the local gas fraction "
       "(muparser syntax, e.g. 'min(0.8, 0.2*t)').");
-  prm.declare_entry ("gas wall condition",
-                     "no-slip",
-                     Selection ("no-slip|free-slip"),
-                     "Gas velocity condition on walls.");
+  const std::string names = closures::registered_names (wall_condition_registry ());
+  const std::string per_group =
+      " on the walls: one condition (" + names +
+      ") for every wall group, or ';'-separated `group: condition` entries for named "
+      "wall groups with at most one bare condition for the others (e.g. 'free-slip; "
+      "side: Johnson-Jackson'). A moving wall's conditions apply relative to its "
+      "motion.";
+  prm.declare_entry (
+      "gas wall condition", "no-slip", Anything (), "Gas velocity condition" + per_group);
   prm.declare_entry ("solids wall condition",
                      "free-slip",
-                     Selection ("no-slip|free-slip|partial-slip|Johnson-Jackson"),
-                     "Solids tangential condition on walls (no penetration always); "
-                     "Johnson-Jackson needs solids stress/model = kinetic theory.");
+                     Anything (),
+                     "Solids velocity condition" + per_group +
+                         " Johnson-Jackson needs solids stress/model = kinetic theory.");
+  prm.declare_entry ("gas wall friction",
+                     "0",
+                     Double (0),
+                     "Robin coefficient C (kg m^-2 s^-1) of the gas's partial-slip "
+                     "traction -C u_slip.");
   prm.declare_entry ("solids wall friction",
                      "0",
                      Double (0),
-                     "Robin coefficient C (kg m^-2 s^-1) of the partial-slip traction "
-                     "-C u_slip.");
+                     "Robin coefficient C (kg m^-2 s^-1) of the solids' partial-slip "
+                     "traction -C u_slip.");
   prm.declare_entry ("no-penetration",
                      "strong",
                      Selection ("Nitsche|strong"),
@@ -90,8 +86,11 @@ void BoundaryConditionParameters::parse_parameters (ParameterHandler &prm)
 {
   prm.enter_subsection ("boundary conditions");
   inlet_superficial_velocity = prm.get ("inlet superficial velocity");
-  gas_wall             = wall_condition_from_string (prm.get ("gas wall condition"));
-  solids_wall          = wall_condition_from_string (prm.get ("solids wall condition"));
+  gas_wall                   = WallConditionChoice::parse (prm.get ("gas wall condition"),
+                                         "boundary conditions/gas wall condition");
+  solids_wall          = WallConditionChoice::parse (prm.get ("solids wall condition"),
+                                            "boundary conditions/solids wall condition");
+  gas_wall_friction    = prm.get_double ("gas wall friction");
   solids_wall_friction = prm.get_double ("solids wall friction");
   hold_solids          = prm.get_bool ("hold solids");
   nitsche              = prm.get ("no-penetration") == "Nitsche";
@@ -128,8 +127,15 @@ void BoundaryConditionParameters::parse_parameters (ParameterHandler &prm)
   require (nitsche_penalty >= 1.0,
            "boundary conditions/Nitsche penalty",
            "must be >= 1 (the symmetric form needs a large enough penalty)");
-  require (solids_wall != WallCondition::partial_slip || solids_wall_friction > 0,
-           "boundary conditions/solids wall friction",
-           "must be > 0 for a partial-slip wall");
+}
+
+void BoundaryConditionParameters::check_wall_conditions (
+    const bool has_kinetic_theory) const
+{
+  const auto choices  = wall_choices ();
+  const auto settings = wall_settings (nullptr, has_kinetic_theory);
+  for (unsigned int k = 0; k < 2; ++k)
+    for (const std::string &name : choices[k].names ())
+      (void)wall_condition_registry ().at (name) (settings[k]);
 }
 } // namespace wetbed

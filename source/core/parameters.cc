@@ -443,11 +443,7 @@ void Parameters::parse_parameters (ParameterHandler &prm)
   conservative_momentum = prm.get ("form") == "conservative";
   prm.leave_subsection ();
   boundary.parse_parameters (prm);
-  require (boundary.solids_wall != WallCondition::johnson_jackson ||
-               solids_stress.model == "kinetic theory",
-           "boundary conditions/solids wall condition",
-           "Johnson-Jackson walls need solids stress/model = kinetic theory (they "
-           "depend on the granular temperature)");
+  boundary.check_wall_conditions (solids_stress.model == "kinetic theory");
   initial.parse_parameters (prm, physical.maximum_packing);
   time.parse_parameters (prm);
   linear_solver.parse_parameters (prm);

@@ -1,4 +1,4 @@
-#include <wetbed/solvers/two_fluid_solver.h>
+#include <wetbed/postprocess/bed_profile.h>
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
@@ -17,47 +17,47 @@ using namespace dealii;
  * meshes).
  */
 template <int dim>
-void TwoFluidSolver<dim>::evaluate_bed_profile (MonitorRow &row) const
+void evaluate_bed_profile (const SolverState<dim> &s, MonitorRow &row)
 {
-  const auto          &pp     = parameters.physical;
+  const auto          &pp     = s.parameters.physical;
   const Tensor<1, dim> up     = upward_direction<dim> (pp.gravity);
-  const auto          &bed    = parameters.bed_monitors;
-  std::vector<double>  planes = parameters.output.probe_heights;
+  const auto          &bed    = s.parameters.bed_monitors;
+  std::vector<double>  planes = s.parameters.output.probe_heights;
   planes.insert (
       planes.end (), bed.pressure_drop_planes.begin (), bed.pressure_drop_planes.end ());
 
   // the extent of the domain along `up`, for the slices
   double bottom = std::numeric_limits<double>::max (), top = -bottom;
-  for (const auto &cell : triangulation.active_cell_iterators ())
+  for (const auto &cell : s.triangulation.active_cell_iterators ())
     if (cell->is_locally_owned ())
       for (const unsigned int v : cell->vertex_indices ())
       {
         bottom = std::min (bottom, cell->vertex (v) * up);
         top    = std::max (top, cell->vertex (v) * up);
       }
-  bottom                          = Utilities::MPI::min (bottom, communicator);
-  top                             = Utilities::MPI::max (top, communicator);
+  bottom                          = Utilities::MPI::min (bottom, s.communicator);
+  top                             = Utilities::MPI::max (top, s.communicator);
   constexpr unsigned int n_slices = 200;
   const double           slice    = (top - bottom) / n_slices;
 
   const QGauss<dim>                quadrature (2);
   const FEValuesExtractors::Scalar pressure (2 * dim);
-  FEValues<dim>                    alpha_values (mapping,
-                              alpha_fe,
+  FEValues<dim>                    alpha_values (s.mapping,
+                              s.alpha_fe,
                               quadrature,
                               update_values | update_JxW_values |
                                   update_quadrature_points);
-  FEValues<dim>       flow_values (mapping, flow_fe, quadrature, update_values);
+  FEValues<dim>       flow_values (s.mapping, s.flow_fe, quadrature, update_values);
   std::vector<double> a_q (quadrature.size ()), p_q (quadrature.size ());
   // per plane: integral of alpha_s, of p', volume; then per slice: alpha_s, volume
   std::vector<double> sums (3 * planes.size () + 2 * n_slices, 0.0);
-  auto                flow_cell = flow_dof_handler.begin_active ();
-  for (const auto &cell : alpha_dof_handler.active_cell_iterators ())
+  auto                flow_cell = s.flow_dof_handler.begin_active ();
+  for (const auto &cell : s.alpha_dof_handler.active_cell_iterators ())
   {
     if (cell->is_locally_owned ())
     {
       alpha_values.reinit (cell);
-      alpha_values.get_function_values (alpha, a_q);
+      alpha_values.get_function_values (s.alpha, a_q);
       double lowest = std::numeric_limits<double>::max (), highest = -lowest;
       for (const unsigned int v : cell->vertex_indices ())
       {
@@ -71,7 +71,7 @@ void TwoFluidSolver<dim>::evaluate_bed_profile (MonitorRow &row) const
           if (!pressure_evaluated)
           {
             flow_values.reinit (flow_cell);
-            flow_values[pressure].get_function_values (flow_solution, p_q);
+            flow_values[pressure].get_function_values (s.flow_solution, p_q);
             pressure_evaluated = true;
           }
           for (unsigned int q = 0; q < quadrature.size (); ++q)
@@ -91,11 +91,11 @@ void TwoFluidSolver<dim>::evaluate_bed_profile (MonitorRow &row) const
     }
     ++flow_cell;
   }
-  Utilities::MPI::sum (sums, communicator, sums);
+  Utilities::MPI::sum (sums, s.communicator, sums);
 
   const auto average = [&] (const unsigned int k, const unsigned int which)
   { return sums[3 * k + 2] > 0 ? sums[3 * k + which] / sums[3 * k + 2] : 0.0; };
-  const unsigned int n_probes = parameters.output.probe_heights.size ();
+  const unsigned int n_probes = s.parameters.output.probe_heights.size ();
   row.plane_alpha.resize (n_probes);
   for (unsigned int k = 0; k < n_probes; ++k)
     row.plane_alpha[k] = average (k, 0);
@@ -109,7 +109,7 @@ void TwoFluidSolver<dim>::evaluate_bed_profile (MonitorRow &row) const
     if (slice_sums[1] > 0 && slice_sums[0] > bed.surface_solids_fraction * slice_sums[1])
       row.bed_surface_height = bottom + (s + 1) * slice;
   }
-  const double initial_height = parameters.initial.bed_height;
+  const double initial_height = s.parameters.initial.bed_height;
   row.expansion_ratio = initial_height > 0 ? row.bed_surface_height / initial_height : 0;
 
   // point probes: the owner of the cell around the point evaluates, the others add 0
@@ -122,28 +122,28 @@ void TwoFluidSolver<dim>::evaluate_bed_profile (MonitorRow &row) const
     Point<dim> point;
     for (unsigned int d = 0; d < dim; ++d)
       point[d] = bed.point_probes[i][d];
-    for (const auto &cell : alpha_dof_handler.active_cell_iterators ())
+    for (const auto &cell : s.alpha_dof_handler.active_cell_iterators ())
       if (cell->is_locally_owned () && cell->point_inside (point))
       {
-        const Point<dim>      unit = mapping.transform_real_to_unit_cell (cell, point);
+        const Point<dim>      unit = s.mapping.transform_real_to_unit_cell (cell, point);
         const Quadrature<dim> at_point (GeometryInfo<dim>::project_to_unit_cell (unit));
-        FEValues<dim>         a_point (mapping, alpha_fe, at_point, update_values);
-        FEValues<dim>         p_point (mapping, flow_fe, at_point, update_values);
+        FEValues<dim>         a_point (s.mapping, s.alpha_fe, at_point, update_values);
+        FEValues<dim>         p_point (s.mapping, s.flow_fe, at_point, update_values);
         a_point.reinit (cell);
         p_point.reinit (typename DoFHandler<dim>::active_cell_iterator (
-            &triangulation, cell->level (), cell->index (), &flow_dof_handler));
+            &s.triangulation, cell->level (), cell->index (), &s.flow_dof_handler));
         std::vector<double> a (1), p (1);
-        a_point.get_function_values (alpha, a);
-        p_point[pressure].get_function_values (flow_solution, p);
+        a_point.get_function_values (s.alpha, a);
+        p_point[pressure].get_function_values (s.flow_solution, p);
         row.probe_alpha[i]    = a[0];
         row.probe_pressure[i] = p[0];
         found[i]              = 1;
         break;
       }
   }
-  Utilities::MPI::sum (found, communicator, found);
-  Utilities::MPI::sum (row.probe_alpha, communicator, row.probe_alpha);
-  Utilities::MPI::sum (row.probe_pressure, communicator, row.probe_pressure);
+  Utilities::MPI::sum (found, s.communicator, found);
+  Utilities::MPI::sum (row.probe_alpha, s.communicator, row.probe_alpha);
+  Utilities::MPI::sum (row.probe_pressure, s.communicator, row.probe_pressure);
   for (unsigned int i = 0; i < found.size (); ++i)
     if (found[i] > 1)
     {
@@ -152,6 +152,6 @@ void TwoFluidSolver<dim>::evaluate_bed_profile (MonitorRow &row) const
     }
 }
 
-template void TwoFluidSolver<2>::evaluate_bed_profile (MonitorRow &) const;
-template void TwoFluidSolver<3>::evaluate_bed_profile (MonitorRow &) const;
+template void evaluate_bed_profile (const SolverState<2> &, MonitorRow &);
+template void evaluate_bed_profile (const SolverState<3> &, MonitorRow &);
 } // namespace wetbed

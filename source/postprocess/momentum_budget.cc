@@ -1,5 +1,5 @@
 #include <wetbed/assembly/inertial_fraction.h>
-#include <wetbed/solvers/two_fluid_solver.h>
+#include <wetbed/postprocess/momentum_budget.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -7,8 +7,8 @@
 
 /*
  * The inertial part of the vertical momentum budget of monitors.csv, the part that
- * closes what the boundary forces (wall_forces.cc) leave open, and the consistent
- * boundary reactions (the residuals of the boundary velocity rows).
+ * closes what the boundary forces (wall_forces.cc) and the consistent boundary
+ * reactions (FlowSystem::boundary_reactions) leave open.
  *
  * The momentum equations are assembled (BDF1 written; alpha*, u* the volume fraction
  * and velocity the last outer iteration linearised about, D_k = div(alpha_k* u_k*)) in
@@ -42,23 +42,25 @@ namespace wetbed
 using namespace dealii;
 
 template <int dim>
-typename TwoFluidSolver<dim>::InertialBudget
-TwoFluidSolver<dim>::evaluate_inertial_budget (const double dt) const
+InertialBudget evaluate_inertial_budget (const SolverState<dim> &s)
 {
-  const auto           &pp         = parameters.physical;
+  const double          dt         = s.time_step;
+  const auto           &pp         = s.parameters.physical;
   const Tensor<1, dim>  up         = upward_direction<dim> (pp.gravity);
   const double          density[2] = {pp.gas_density, pp.particle_density};
   const QGauss<dim>     quadrature (3);
   const QGauss<dim - 1> face_quadrature (3);
-  FEValues<dim>         flow_values (
-      mapping, flow_fe, quadrature, update_values | update_gradients | update_JxW_values);
-  FEValues<dim> alpha_values (
-      mapping, alpha_fe, quadrature, update_values | update_gradients);
-  FEFaceValues<dim> flow_face (mapping,
-                               flow_fe,
+  FEValues<dim>         flow_values (s.mapping,
+                             s.flow_fe,
+                             quadrature,
+                             update_values | update_gradients | update_JxW_values);
+  FEValues<dim>         alpha_values (
+      s.mapping, s.alpha_fe, quadrature, update_values | update_gradients);
+  FEFaceValues<dim> flow_face (s.mapping,
+                               s.flow_fe,
                                face_quadrature,
                                update_values | update_normal_vectors | update_JxW_values);
-  FEFaceValues<dim> alpha_face (mapping, alpha_fe, face_quadrature, update_values);
+  FEFaceValues<dim> alpha_face (s.mapping, s.alpha_fe, face_quadrature, update_values);
   const FEValuesExtractors::Vector velocity[2] = {FEValuesExtractors::Vector (0),
                                                   FEValuesExtractors::Vector (dim)};
   const unsigned int               n_q         = quadrature.size ();
@@ -67,30 +69,33 @@ TwoFluidSolver<dim>::evaluate_inertial_budget (const double dt) const
   std::vector<Tensor<1, dim>> grad_a_lag (n_q), u_new (n_q), u_old (n_q), u_lag (n_q),
       u_face (face_quadrature.size ());
   std::vector<Tensor<2, dim>> grad_u_lag (n_q);
-  const bool                  conservative = parameters.conservative_momentum;
+  const bool                  conservative = s.parameters.conservative_momentum;
 
   const double residual = pp.residual_solids_fraction;
   auto         fraction = [&] (const unsigned int k, const double alpha_s)
   { return inertial_fraction (k, alpha_s, residual); };
 
   InertialBudget budget;
-  auto           alpha_cell = alpha_dof_handler.begin_active ();
-  for (const auto &cell : flow_dof_handler.active_cell_iterators ())
+  auto           alpha_cell = s.alpha_dof_handler.begin_active ();
+  for (const auto &cell : s.flow_dof_handler.active_cell_iterators ())
   {
     if (cell->is_locally_owned ())
     {
       flow_values.reinit (cell);
       alpha_values.reinit (alpha_cell);
-      alpha_values.get_function_values (alpha, a_new);
-      alpha_values.get_function_values (alpha_old2, a_old);
-      alpha_values.get_function_values (assembled_alpha, a_lag);
-      alpha_values.get_function_gradients (assembled_alpha, grad_a_lag);
+      alpha_values.get_function_values (s.alpha, a_new);
+      alpha_values.get_function_values (s.alpha_previous, a_old);
+      alpha_values.get_function_values (s.flow_system.linearisation_alpha (), a_lag);
+      alpha_values.get_function_gradients (s.flow_system.linearisation_alpha (),
+                                           grad_a_lag);
       for (unsigned int k = 0; k < 2; ++k)
       {
-        flow_values[velocity[k]].get_function_values (flow_solution, u_new);
-        flow_values[velocity[k]].get_function_values (flow_old2, u_old);
-        flow_values[velocity[k]].get_function_values (assembled_flow, u_lag);
-        flow_values[velocity[k]].get_function_gradients (assembled_flow, grad_u_lag);
+        flow_values[velocity[k]].get_function_values (s.flow_solution, u_new);
+        flow_values[velocity[k]].get_function_values (s.flow_previous, u_old);
+        flow_values[velocity[k]].get_function_values (s.flow_system.linearisation_flow (),
+                                                      u_lag);
+        flow_values[velocity[k]].get_function_gradients (
+            s.flow_system.linearisation_flow (), grad_u_lag);
         for (unsigned int q = 0; q < n_q; ++q)
         {
           const double JxW          = flow_values.JxW (q);
@@ -116,15 +121,15 @@ TwoFluidSolver<dim>::evaluate_inertial_budget (const double dt) const
       for (const auto &face : cell->face_iterators ())
       {
         if (!face->at_boundary () ||
-            !(boundaries.is (face->boundary_id (), BoundaryType::inlet) ||
-              boundaries.is (face->boundary_id (), BoundaryType::outlet)))
+            !(s.boundaries.is (face->boundary_id (), BoundaryType::inlet) ||
+              s.boundaries.is (face->boundary_id (), BoundaryType::outlet)))
           continue;
         flow_face.reinit (cell, face);
         alpha_face.reinit (alpha_cell, face);
-        alpha_face.get_function_values (alpha, a_face);
+        alpha_face.get_function_values (s.alpha, a_face);
         for (unsigned int k = 0; k < 2; ++k)
         {
-          flow_face[velocity[k]].get_function_values (flow_solution, u_face);
+          flow_face[velocity[k]].get_function_values (s.flow_solution, u_face);
           for (unsigned int q = 0; q < face_quadrature.size (); ++q)
             budget.momentum_outflow +=
                 density[k] * fraction (k, a_face[q]) * (u_face[q] * up) *
@@ -134,34 +139,13 @@ TwoFluidSolver<dim>::evaluate_inertial_budget (const double dt) const
     }
     ++alpha_cell;
   }
-  budget.momentum          = Utilities::MPI::sum (budget.momentum, communicator);
-  budget.continuity_defect = Utilities::MPI::sum (budget.continuity_defect, communicator);
-  budget.momentum_outflow  = Utilities::MPI::sum (budget.momentum_outflow, communicator);
+  budget.momentum = Utilities::MPI::sum (budget.momentum, s.communicator);
+  budget.continuity_defect =
+      Utilities::MPI::sum (budget.continuity_defect, s.communicator);
+  budget.momentum_outflow = Utilities::MPI::sum (budget.momentum_outflow, s.communicator);
   return budget;
 }
 
-template <int dim>
-std::array<double, 3> TwoFluidSolver<dim>::evaluate_boundary_reactions () const
-{
-  std::array<double, 3> residual = {{0, 0, 0}};
-  for (const BoundaryCellSystem &system : boundary_cell_systems)
-    for (unsigned int b = 0; b < 3; ++b)
-    {
-      residual[b] -= system.rhs[b];
-      for (unsigned int j = 0; j < system.row[b].size (); ++j)
-        residual[b] += system.row[b][j] * flow_solution (system.dofs[j]);
-    }
-  // the rows lack the boundary terms of the integration by parts, -int (-p' I + tau) n
-  // . v: what they leave unbalanced is the force the boundary exerts (0 on free rows)
-  for (double &r : residual)
-    r = Utilities::MPI::sum (r, communicator);
-  return residual;
-}
-
-template TwoFluidSolver<2>::InertialBudget
-TwoFluidSolver<2>::evaluate_inertial_budget (double) const;
-template TwoFluidSolver<3>::InertialBudget
-                               TwoFluidSolver<3>::evaluate_inertial_budget (double) const;
-template std::array<double, 3> TwoFluidSolver<2>::evaluate_boundary_reactions () const;
-template std::array<double, 3> TwoFluidSolver<3>::evaluate_boundary_reactions () const;
+template InertialBudget evaluate_inertial_budget (const SolverState<2> &);
+template InertialBudget evaluate_inertial_budget (const SolverState<3> &);
 } // namespace wetbed

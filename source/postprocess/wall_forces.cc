@@ -1,4 +1,4 @@
-#include <wetbed/solvers/two_fluid_solver.h>
+#include <wetbed/postprocess/wall_forces.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -12,10 +12,10 @@
  * the remainder being the change of the phases' momentum, the gas momentum flux and
  * pressure forces on walls that are not vertical. Each force is the one the boundary
  * exerts on a phase, along -g, divided by the buoyant bed weight:
- *   - walls on the solids: the friction -C (u_s - u_w)_t of the Johnson-Jackson or
- *     partial-slip condition, with C as the assembly takes it (a no-slip solids phase:
- *     its viscous traction tau_s n, from the velocity gradient);
- *   - walls on the gas: the viscous traction tau_g n of a no-slip gas;
+ *   - walls on each phase: the friction -C (u_k - u_w)_t of the wall's condition
+ *     (Johnson-Jackson, partial slip, ...), with C as the assembly takes it from the
+ *     condition; a phase that takes the wall's velocity (no slip): its viscous traction
+ *     tau_k n, from the velocity gradient;
  *   - the inlet (distributor) on the solids held there: (-(P_s + P_kin) I + tau_s) n;
  *   - the outlet (a grid that retains the solids) on the solids, the same stress: it
  *     pushes a bed that reaches the top down (negative).
@@ -25,24 +25,20 @@ namespace wetbed
 using namespace dealii;
 
 template <int dim>
-typename TwoFluidSolver<dim>::WallForces
-TwoFluidSolver<dim>::evaluate_wall_forces () const
+WallForces evaluate_wall_forces (const SolverState<dim> &s)
 {
-  const auto          &pp              = parameters.physical;
-  const auto          &bc              = parameters.boundary;
-  const Tensor<1, dim> up              = upward_direction<dim> (pp.gravity);
-  const Tensor<1, dim> wall_velocity   = moving_wall_velocity ();
-  const bool           solids_friction = bc.solids_wall == WallCondition::partial_slip ||
-                               bc.solids_wall == WallCondition::johnson_jackson;
+  const auto           &pp            = s.parameters.physical;
+  const Tensor<1, dim>  up            = upward_direction<dim> (pp.gravity);
+  const Tensor<1, dim>  wall_velocity = s.moving_wall_velocity;
   const QGauss<dim - 1> quadrature (3);
-  FEFaceValues<dim>     flow_values (mapping,
-                                 flow_fe,
+  FEFaceValues<dim>     flow_values (s.mapping,
+                                 s.flow_fe,
                                  quadrature,
                                  update_values | update_gradients |
                                      update_normal_vectors | update_JxW_values);
-  FEFaceValues<dim>     alpha_values (mapping, alpha_fe, quadrature, update_values);
+  FEFaceValues<dim>     alpha_values (s.mapping, s.alpha_fe, quadrature, update_values);
   const FEValuesExtractors::Vector gas (0), solids (dim);
-  std::vector<Tensor<1, dim>>      u_s (quadrature.size ());
+  std::vector<Tensor<1, dim>>      u_g (quadrature.size ()), u_s (quadrature.size ());
   std::vector<Tensor<2, dim>>      grad_u_g (quadrature.size ()),
       grad_u_s (quadrature.size ());
   std::vector<double> a (quadrature.size ()), theta_q (quadrature.size ());
@@ -54,8 +50,8 @@ TwoFluidSolver<dim>::evaluate_wall_forces () const
                                                  unit_symmetric_tensor<dim> ());
   };
   WallForces forces;
-  auto       alpha_cell = alpha_dof_handler.begin_active ();
-  for (const auto &cell : flow_dof_handler.active_cell_iterators ())
+  auto       alpha_cell = s.alpha_dof_handler.begin_active ();
+  for (const auto &cell : s.flow_dof_handler.active_cell_iterators ())
   {
     if (cell->is_locally_owned ())
       for (const auto &face : cell->face_iterators ())
@@ -63,24 +59,25 @@ TwoFluidSolver<dim>::evaluate_wall_forces () const
         if (!face->at_boundary ())
           continue;
         const auto id     = face->boundary_id ();
-        const bool wall   = boundaries.is_wall (id),
-                   inlet  = boundaries.is (id, BoundaryType::inlet),
-                   outlet = boundaries.is (id, BoundaryType::outlet);
+        const bool wall   = s.boundaries.is_wall (id),
+                   inlet  = s.boundaries.is (id, BoundaryType::inlet),
+                   outlet = s.boundaries.is (id, BoundaryType::outlet);
         if (!wall && !inlet && !outlet)
           continue;
         flow_values.reinit (cell, face);
         alpha_values.reinit (alpha_cell, face);
-        flow_values[solids].get_function_values (flow_solution, u_s);
-        flow_values[gas].get_function_gradients (flow_solution, grad_u_g);
-        flow_values[solids].get_function_gradients (flow_solution, grad_u_s);
-        alpha_values.get_function_values (alpha, a);
-        alpha_values.get_function_values (theta, theta_q);
+        flow_values[gas].get_function_values (s.flow_solution, u_g);
+        flow_values[solids].get_function_values (s.flow_solution, u_s);
+        flow_values[gas].get_function_gradients (s.flow_solution, grad_u_g);
+        flow_values[solids].get_function_gradients (s.flow_solution, grad_u_s);
+        alpha_values.get_function_values (s.alpha, a);
+        alpha_values.get_function_values (s.theta, theta_q);
         for (unsigned int q = 0; q < quadrature.size (); ++q)
         {
           const Tensor<1, dim>         n      = flow_values.normal_vector (q);
           const double                 JxW    = flow_values.JxW (q);
           const double                 a_s    = std::max (a[q], 0.0);
-          const closures::SolidsStress stress = closure_evaluator.stress (
+          const closures::SolidsStress stress = s.closures.stress (
               a_s, theta_q[q], closures::ClosureEvaluator::shear_rate<dim> (grad_u_s[q]));
           // MFIX convention: mu_s, lambda_s carry alpha_s (doc/theory.md, "Conventions")
           const Tensor<2, dim> tau_s =
@@ -92,36 +89,37 @@ TwoFluidSolver<dim>::evaluate_wall_forces () const
                 (-pressure * n + tau_s * n) * up * JxW;
             continue;
           }
-          if (bc.gas_wall == WallCondition::no_slip)
-            forces.gas_wall +=
-                (viscous (grad_u_g[q], (1 - a_s) * pp.gas_viscosity, 0.0) * n) * up * JxW;
-          if (solids_friction)
+          // the force of the wall on each phase: the friction of its condition, or
+          // the viscous traction where the phase takes the wall's velocity
+          const Tensor<2, dim> tau_g =
+              viscous (grad_u_g[q], (1 - a_s) * pp.gas_viscosity, 0.0);
+          for (const Phase phase : {Phase::gas, Phase::solids})
           {
-            const double   friction = bc.solids_wall == WallCondition::johnson_jackson
-                                          ? kinetic_theory->wall ().shear_coefficient (
-                                              a_s,
-                                              kinetic_theory->radial_distribution (a_s),
-                                              std::max (theta_q[q], 0.0))
-                                          : bc.solids_wall_friction;
-            Tensor<1, dim> slip = u_s[q] - (boundaries.is (id, BoundaryType::moving_wall)
-                                                ? wall_velocity
-                                                : Tensor<1, dim> ());
-            slip -= (slip * n) * n;
-            forces.solids_wall += -friction * (slip * up) * JxW;
+            const WallCondition &condition = s.wall_conditions.at (id, phase);
+            double &force = phase == Phase::gas ? forces.gas_wall : forces.solids_wall;
+            if (condition.has_friction ())
+            {
+              Tensor<1, dim> slip =
+                  (phase == Phase::gas ? u_g[q] : u_s[q]) -
+                  (s.boundaries.is (id, BoundaryType::moving_wall) ? wall_velocity
+                                                                   : Tensor<1, dim> ());
+              slip -= (slip * n) * n;
+              force += -condition.friction ({a_s, theta_q[q]}) * (slip * up) * JxW;
+            }
+            else if (condition.prescribes_velocity ())
+              force += ((phase == Phase::gas ? tau_g : tau_s) * n) * up * JxW;
           }
-          else if (bc.solids_wall == WallCondition::no_slip)
-            forces.solids_wall += (tau_s * n) * up * JxW;
         }
       }
     ++alpha_cell;
   }
-  forces.solids_wall = Utilities::MPI::sum (forces.solids_wall, communicator);
-  forces.gas_wall    = Utilities::MPI::sum (forces.gas_wall, communicator);
-  forces.distributor = Utilities::MPI::sum (forces.distributor, communicator);
-  forces.outlet      = Utilities::MPI::sum (forces.outlet, communicator);
+  forces.solids_wall = Utilities::MPI::sum (forces.solids_wall, s.communicator);
+  forces.gas_wall    = Utilities::MPI::sum (forces.gas_wall, s.communicator);
+  forces.distributor = Utilities::MPI::sum (forces.distributor, s.communicator);
+  forces.outlet      = Utilities::MPI::sum (forces.outlet, s.communicator);
   return forces;
 }
 
-template TwoFluidSolver<2>::WallForces TwoFluidSolver<2>::evaluate_wall_forces () const;
-template TwoFluidSolver<3>::WallForces TwoFluidSolver<3>::evaluate_wall_forces () const;
+template WallForces evaluate_wall_forces (const SolverState<2> &);
+template WallForces evaluate_wall_forces (const SolverState<3> &);
 } // namespace wetbed

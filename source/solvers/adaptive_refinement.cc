@@ -180,8 +180,6 @@ void TwoFluidSolver<dim>::adapt_mesh ()
     }
   for (unsigned int k = 0; k < 3; ++k)
     restore_solids_mass (*scalars[k], masses[k], candidate);
-  // the AMG hierarchy belongs to the old mesh
-  flow_linear_solver.reset ();
 }
 
 template <int dim>

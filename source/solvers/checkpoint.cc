@@ -1,4 +1,5 @@
 #include <wetbed/core/input_error.h>
+#include <wetbed/postprocess/bed_monitors.h>
 #include <wetbed/solvers/two_fluid_solver.h>
 
 #include <deal.II/base/mpi.h>
@@ -218,6 +219,7 @@ void TwoFluidSolver<dim>::resume_from_checkpoint ()
                                output,
                                parameters.physical.gravity,
                                triangulation);
+  make_wall_conditions ();
   make_bubble_analysis ();
   try
   {
@@ -255,7 +257,7 @@ void TwoFluidSolver<dim>::resume_from_checkpoint ()
                    Utilities::MPI::this_mpi_process (communicator) == 0,
                    state.monitors_bytes,
                    monitor_columns ());
-  monitors.restore (evaluate_monitors ());
+  monitors.restore (evaluate_monitors (this->state ()));
   bubble_analysis->restore_state (state.bubble_state, output);
   resumed = true;
   pcout << "Resumed from " << folder << " at t = " << time << " (step " << step_number

@@ -19,7 +19,8 @@
 /*
  * The degrees of freedom of a mesh: the flow (u_g, u_s | p') in two blocks, the alpha_s
  * and Theta space, their constraints (hanging nodes, periodicity) and sparsity, the
- * transport operator, fresh preconditioners, and the checks that need the mesh.
+ * transport operator, the flow system for this mesh, and the checks that need the
+ * mesh.
  */
 namespace wetbed
 {
@@ -56,52 +57,24 @@ void TwoFluidSolver<dim>::setup_dofs ()
   alpha.reinit (alpha_dof_handler.locally_owned_dofs (), alpha_relevant, communicator);
   alpha_old.reinit (alpha);
   alpha_old2.reinit (alpha);
-  assembled_alpha.reinit (alpha);
   // the granular temperature lives on the alpha_s space (Q1, same DoFs)
   theta.reinit (alpha);
   theta_old.reinit (alpha);
   theta_old2.reinit (alpha);
   make_flow_constraints (0.0);
 
-  {
-    Table<2, DoFTools::Coupling> coupling (2 * dim + 1, 2 * dim + 1);
-    for (unsigned int c = 0; c < 2 * dim + 1; ++c)
-      for (unsigned int d = 0; d < 2 * dim + 1; ++d)
-        coupling[c][d] = DoFTools::always; // (p,p) kept for constrained pressure rows
-    BlockDynamicSparsityPattern dsp (flow_relevant);
-    DoFTools::make_sparsity_pattern (
-        flow_dof_handler, coupling, dsp, flow_constraints, false);
-    SparsityTools::distribute_sparsity_pattern (dsp, owned, communicator, relevant);
-    Table<2, DoFTools::Coupling> schur_coupling (2 * dim + 1, 2 * dim + 1);
-    for (unsigned int c = 0; c < 2 * dim + 1; ++c)
-      for (unsigned int d = 0; d < 2 * dim + 1; ++d)
-        schur_coupling[c][d] =
-            (c == 2 * dim && d == 2 * dim) ? DoFTools::always : DoFTools::none;
-    BlockDynamicSparsityPattern schur_dsp (flow_relevant);
-    DoFTools::make_sparsity_pattern (
-        flow_dof_handler, schur_coupling, schur_dsp, schur_constraints, false);
-    SparsityTools::distribute_sparsity_pattern (schur_dsp, owned, communicator, relevant);
-    flow_operator.reinit (flow_owned, dsp, schur_dsp, communicator);
-  }
-  {
-    std::vector<bool> velocity (2 * dim + 1, true);
-    velocity[2 * dim] = false;
-    // the momentum budget's parts: every inlet, every wall, every outlet group
-    const std::set<types::boundary_id> ids[3] = {boundaries.ids (BoundaryType::inlet),
-                                                 boundaries.walls (),
-                                                 boundaries.ids (BoundaryType::outlet)};
-    for (unsigned int b = 0; b < 3; ++b)
-      // (an empty set would mean every boundary to extract_boundary_dofs)
-      boundary_velocity_dofs[b] =
-          ids[b].empty () ? IndexSet (flow_dof_handler.n_dofs ())
-                          : DoFTools::extract_boundary_dofs (
-                                flow_dof_handler, ComponentMask (velocity), ids[b]);
-  }
-  flow_rhs.reinit (flow_owned, communicator);
   flow_solution.reinit (flow_owned, flow_relevant, communicator);
   flow_old.reinit (flow_solution);
   flow_old2.reinit (flow_solution);
-  assembled_flow.reinit (flow_solution);
+  // the operator's sparsity, the reaction rows, a fresh preconditioner
+  flow_system.reinit (mapping,
+                      flow_dof_handler,
+                      flow_owned,
+                      flow_relevant,
+                      flow_constraints,
+                      schur_constraints,
+                      boundaries,
+                      alpha);
 
   transport.setup (alpha_dof_handler, mapping, alpha_constraints, alpha);
 
@@ -117,31 +90,8 @@ void TwoFluidSolver<dim>::setup_dofs ()
       granular_energy_matrix.reinit (alpha_owned, alpha_owned, dsp, communicator);
   }
 
-  reset_flow_preconditioner ();
   measure_mesh ();
   report_mesh (dofs_per_block);
-}
-
-template <int dim>
-void TwoFluidSolver<dim>::reset_flow_preconditioner ()
-{
-  // a new mesh needs new hierarchies; the build counts go on
-  const unsigned int velocity_builds =
-      preconditioner ? preconditioner->velocity_builds : 0;
-  const unsigned int schur_builds = preconditioner ? preconditioner->schur_builds : 0;
-  preconditioner = std::make_unique<BlockPreconditioner> (parameters.linear_solver);
-  preconditioner->velocity_builds = velocity_builds;
-  preconditioner->schur_builds    = schur_builds;
-  {
-    VelocityNearNullSpace space =
-        velocity_near_null_space (mapping,
-                                  flow_dof_handler,
-                                  flow_owned[0],
-                                  parameters.linear_solver.rotation_modes,
-                                  communicator);
-    preconditioner->set_near_null_space (std::move (space.modes), space.dofs_per_node);
-  }
-  flow_linear_solver.reset ();
 }
 
 template <int dim>
@@ -230,8 +180,6 @@ Tensor<1, dim> TwoFluidSolver<dim>::moving_wall_velocity () const
 
 template void TwoFluidSolver<2>::setup_dofs ();
 template void TwoFluidSolver<3>::setup_dofs ();
-template void TwoFluidSolver<2>::reset_flow_preconditioner ();
-template void TwoFluidSolver<3>::reset_flow_preconditioner ();
 template void TwoFluidSolver<2>::measure_mesh ();
 template void TwoFluidSolver<3>::measure_mesh ();
 template void

@@ -109,32 +109,38 @@ void TwoFluidSolver<dim>::constrain_walls ()
   const Tensor<1, dim> wall_velocity = moving_wall_velocity ();
   for (unsigned int d = 0; d < dim; ++d)
     wall_motion[d] = wall_motion[dim + d] = wall_velocity[d];
-  // slip walls: no penetration as constraints unless imposed by Nitsche in the assembly
-  auto wall = [&] (const unsigned int   first,
-                   const WallCondition  condition,
-                   const ComponentMask &mask)
+  // per phase: the walls of a prescribed velocity (no slip) as constraints, on the
+  // others no penetration as constraints unless Nitsche imposes it in the assembly
+  auto wall = [&] (const Phase phase, const ComponentMask &mask)
   {
-    if (condition == WallCondition::no_slip)
-    {
-      interpolate_on (mapping,
-                      flow_dof_handler,
-                      ids.ids (BoundaryType::wall),
-                      Functions::ZeroFunction<dim> (2 * dim + 1),
-                      flow_constraints,
-                      mask);
-      interpolate_on (mapping,
-                      flow_dof_handler,
-                      ids.ids (BoundaryType::moving_wall),
-                      Functions::ConstantFunction<dim> (wall_motion),
-                      flow_constraints,
-                      mask);
-    }
-    else if (!bc.nitsche)
-      VectorTools::compute_no_normal_flux_constraints (
-          flow_dof_handler, first, ids.walls (), flow_constraints, mapping);
+    const auto prescribed = wall_conditions.walls (
+        phase, [] (const WallCondition &c) { return c.prescribes_velocity (); });
+    const auto slipping = wall_conditions.walls (
+        phase, [] (const WallCondition &c) { return !c.prescribes_velocity (); });
+    std::set<types::boundary_id> fixed, moving;
+    for (const auto id : prescribed)
+      (ids.is (id, BoundaryType::moving_wall) ? moving : fixed).insert (id);
+    interpolate_on (mapping,
+                    flow_dof_handler,
+                    fixed,
+                    Functions::ZeroFunction<dim> (2 * dim + 1),
+                    flow_constraints,
+                    mask);
+    interpolate_on (mapping,
+                    flow_dof_handler,
+                    moving,
+                    Functions::ConstantFunction<dim> (wall_motion),
+                    flow_constraints,
+                    mask);
+    if (!bc.nitsche && !slipping.empty ())
+      VectorTools::compute_no_normal_flux_constraints (flow_dof_handler,
+                                                       phase == Phase::gas ? 0 : dim,
+                                                       slipping,
+                                                       flow_constraints,
+                                                       mapping);
   };
-  wall (dim, bc.solids_wall, solids_mask);
-  wall (0, bc.gas_wall, gas_mask);
+  wall (Phase::solids, solids_mask);
+  wall (Phase::gas, gas_mask);
 }
 
 template <int dim>

@@ -1,6 +1,7 @@
 #include <wetbed/core/input_error.h>
 #include <wetbed/core/stop_signal.h>
 #include <wetbed/solvers/two_fluid_solver.h>
+#include <wetbed/solvers/wave_speeds.h>
 
 #include <fstream>
 #include <sstream>
@@ -35,6 +36,7 @@ TwoFluidSolver<dim>::TwoFluidSolver (const Parameters &parameters, MPI_Comm comm
       triangulation (communicator), mapping (parameters.mesh.mapping_degree),
       flow_fe (FE_Q<dim> (2), 2 * dim, FE_Q<dim> (1), 1),
       flow_dof_handler (triangulation), alpha_fe (1), alpha_dof_handler (triangulation),
+      flow_system (parameters, communicator, pcout, timer),
       drag (closures::create_drag_model (parameters.drag_model)),
       solids_stress (closures::create_solids_stress_model (parameters.solids_stress,
                                                            parameters.physical,
@@ -48,7 +50,6 @@ TwoFluidSolver<dim>::TwoFluidSolver (const Parameters &parameters, MPI_Comm comm
                          *solids_stress,
                          gas_particle,
                          parameters.physical.residual_solids_fraction),
-      flow_linear_solver (parameters.linear_solver, pcout, timer),
       time_step_controller (parameters.time), time (0),
       time_step (parameters.time.initial_time_step), previous_time_step (0),
       step_number (0), rejected_steps (0), last_krylov_iterations (0),
@@ -73,7 +74,7 @@ void TwoFluidSolver<dim>::set_manufactured_solution (
     std::shared_ptr<ManufacturedSolution<dim>> m)
 {
   manufactured = m;
-  flow_assembler.reset (); // the manufactured sources join the terms
+  flow_system.set_assembler (nullptr); // the manufactured sources join the terms
 }
 
 template <int dim>
@@ -111,6 +112,7 @@ void TwoFluidSolver<dim>::initialize ()
                                  folder,
                                  parameters.physical.gravity,
                                  triangulation);
+    make_wall_conditions ();
     connect_load_balancing ();
     make_bubble_analysis ();
     setup_dofs ();
@@ -130,6 +132,15 @@ void TwoFluidSolver<dim>::initialize ()
   if (parameters.checkpoint.on_signal)
     catch_stop_signals ();
   initialized = true;
+}
+
+template <int dim>
+void TwoFluidSolver<dim>::make_wall_conditions ()
+{
+  wall_conditions = WallConditions (
+      boundaries,
+      parameters.boundary.wall_choices (),
+      parameters.boundary.wall_settings (kinetic_theory, kinetic_theory != nullptr));
 }
 
 template <int dim>
@@ -309,11 +320,7 @@ TwoFluidSolver<dim>::hydrostatic_profile (const std::vector<double> &heights) co
 template <int dim>
 double TwoFluidSolver<dim>::solids_mass (const AlphaVector &a) const
 {
-  const auto &m   = transport.lumped_mass ();
-  double      sum = 0;
-  for (unsigned int i = 0; i < a.locally_owned_size (); ++i)
-    sum += m.local_element (i) * a.local_element (i);
-  return Utilities::MPI::sum (sum, communicator) * parameters.physical.particle_density;
+  return state ().solids_mass (a);
 }
 
 template <int dim>
@@ -372,7 +379,8 @@ bool TwoFluidSolver<dim>::try_time_step (const double dt, const unsigned int bdf
     // 1. closures at quadrature points + monolithic (u_g, u_s, p') solve with
     //    P_s(alpha_m) explicit, alpha_m the latest alpha_s (alpha_s^n at k = 0)
     assemble_flow_system (bdf, dt);
-    const unsigned int iterations = solve_flow_system (dt);
+    const unsigned int iterations =
+        flow_system.solve (flow_solution, flow_constraints, dt, solve_history);
     if (iterations == numbers::invalid_unsigned_int)
     {
       rejection_reason = "FGMRES did not converge";
@@ -432,14 +440,8 @@ double TwoFluidSolver<dim>::next_time_step (const double dt) const
 {
   if (!parameters.time.adaptive)
     return dt;
-  return time_step_controller.next (dt, evaluate_wave_speeds (), min_node_spacing);
-}
-
-template <int dim>
-void TwoFluidSolver<dim>::record_monitors ()
-{
-  TimerOutput::Scope scope (timer, "monitors");
-  monitors.add (evaluate_monitors ());
+  return time_step_controller.next (
+      dt, evaluate_wave_speeds (state ()), min_node_spacing);
 }
 
 template <int dim>
@@ -584,8 +586,8 @@ typename TwoFluidSolver<dim>::RunEnd TwoFluidSolver<dim>::run ()
         << 1e6 * elapsed / std::max (1u, step_number - first_step) /
                triangulation.n_global_active_cells ()
         << " us per cell per step (" << triangulation.n_global_active_cells ()
-        << " cells at the end); velocity AMG builds " << preconditioner->velocity_builds
-        << std::endl;
+        << " cells at the end); velocity AMG builds "
+        << flow_system.block_preconditioner ().velocity_builds << std::endl;
   timer.print_wall_time_statistics (communicator);
   write_spectra ();
   return RunEnd::finished;

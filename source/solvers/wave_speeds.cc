@@ -1,4 +1,8 @@
-#include <wetbed/solvers/two_fluid_solver.h>
+#include <wetbed/solvers/wave_speeds.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <cmath>
 
 namespace wetbed
 {
@@ -11,14 +15,14 @@ using namespace dealii;
  * / (alpha_s rho_s)) (explicit in the step); collective.
  */
 template <int dim>
-WaveSpeeds TwoFluidSolver<dim>::evaluate_wave_speeds () const
+WaveSpeeds evaluate_wave_speeds (const SolverState<dim> &s)
 {
-  std::vector<types::global_dof_index> dofs (flow_fe.n_dofs_per_cell ()),
-      alpha_cell_dofs (alpha_fe.n_dofs_per_cell ());
-  const unsigned int n_nodes   = flow_fe.base_element (0).n_dofs_per_cell ();
+  std::vector<types::global_dof_index> dofs (s.flow_fe.n_dofs_per_cell ()),
+      alpha_cell_dofs (s.alpha_fe.n_dofs_per_cell ());
+  const unsigned int n_nodes   = s.flow_fe.base_element (0).n_dofs_per_cell ();
   double             gas_speed = 0, solids_speed = 0;
-  auto               alpha_cell = alpha_dof_handler.begin_active ();
-  for (const auto &cell : flow_dof_handler.active_cell_iterators ())
+  auto               alpha_cell = s.alpha_dof_handler.begin_active ();
+  for (const auto &cell : s.flow_dof_handler.active_cell_iterators ())
   {
     if (cell->is_locally_owned ())
     {
@@ -30,37 +34,38 @@ WaveSpeeds TwoFluidSolver<dim>::evaluate_wave_speeds () const
         for (unsigned int d = 0; d < dim; ++d)
         {
           g2 += std::pow (
-              flow_solution (dofs[flow_fe.component_to_system_index (d, node)]), 2);
+              s.flow_solution (dofs[s.flow_fe.component_to_system_index (d, node)]), 2);
           s2 += std::pow (
-              flow_solution (dofs[flow_fe.component_to_system_index (dim + d, node)]), 2);
+              s.flow_solution (dofs[s.flow_fe.component_to_system_index (dim + d, node)]),
+              2);
         }
         gas_speed = std::max (gas_speed, std::sqrt (g2));
         if (node < GeometryInfo<dim>::vertices_per_cell &&
-            alpha (alpha_cell_dofs[node]) > 1e-3)
+            s.alpha (alpha_cell_dofs[node]) > 1e-3)
           solids_speed = std::max (solids_speed, std::sqrt (s2));
       }
     }
     ++alpha_cell;
   }
   double sound = 0;
-  if (kinetic_theory)
-    for (unsigned int i = 0; i < theta.locally_owned_size (); ++i)
+  if (s.kinetic_theory)
+    for (unsigned int i = 0; i < s.theta.locally_owned_size (); ++i)
     {
-      const double a = std::max (alpha.local_element (i), 0.0);
+      const double a = std::max (s.alpha.local_element (i), 0.0);
       if (a > 1e-3)
-        sound =
-            std::max (sound,
-                      std::sqrt (2.0 * kinetic_theory->evaluate (a, 1.0).pressure_factor *
-                                 theta.local_element (i) /
-                                 (a * parameters.physical.particle_density)));
+        sound = std::max (
+            sound,
+            std::sqrt (2.0 * s.kinetic_theory->evaluate (a, 1.0).pressure_factor *
+                       s.theta.local_element (i) /
+                       (a * s.parameters.physical.particle_density)));
     }
   WaveSpeeds speeds;
-  speeds.gas            = Utilities::MPI::max (gas_speed, communicator);
-  speeds.solids         = Utilities::MPI::max (solids_speed, communicator);
-  speeds.granular_sound = Utilities::MPI::max (sound, communicator);
+  speeds.gas            = Utilities::MPI::max (gas_speed, s.communicator);
+  speeds.solids         = Utilities::MPI::max (solids_speed, s.communicator);
+  speeds.granular_sound = Utilities::MPI::max (sound, s.communicator);
   return speeds;
 }
 
-template WaveSpeeds TwoFluidSolver<2>::evaluate_wave_speeds () const;
-template WaveSpeeds TwoFluidSolver<3>::evaluate_wave_speeds () const;
+template WaveSpeeds evaluate_wave_speeds (const SolverState<2> &);
+template WaveSpeeds evaluate_wave_speeds (const SolverState<3> &);
 } // namespace wetbed

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <wetbed/boundary_conditions/wall_conditions.h>
+
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/tensor.h>
 
@@ -7,28 +9,39 @@
 
 namespace wetbed
 {
-enum class WallCondition
-{
-  no_slip,
-  free_slip,
-  partial_slip,
-  johnson_jackson
-};
-
 /** `subsection boundary conditions`. */
 struct BoundaryConditionParameters
 {
-  std::string   inlet_superficial_velocity; // function of t (m/s)
-  WallCondition gas_wall, solids_wall;
-  double        solids_wall_friction; // Robin coefficient, kg m^-2 s^-1 (partial slip)
-  bool          nitsche;              // weak no-penetration on slip walls (else strong)
-  double        nitsche_penalty;      // gamma_0
-  bool          hold_solids;          // u_s held everywhere (fixed bed, frozen shear)
-  std::string   held_solids_velocity; // u_s(x, y, z, t) where held, ';'-separated
-  std::string   moving_wall_name; // a wall group that slides tangentially; empty: none
+  std::string         inlet_superficial_velocity; // function of t (m/s)
+  WallConditionChoice gas_wall, solids_wall;
+  // Robin coefficients of a partial-slip wall, kg m^-2 s^-1
+  double      gas_wall_friction, solids_wall_friction;
+  bool        nitsche;              // weak no-penetration on slip walls (else strong)
+  double      nitsche_penalty;      // gamma_0
+  bool        hold_solids;          // u_s held everywhere (fixed bed, frozen shear)
+  std::string held_solids_velocity; // u_s(x, y, z, t) where held, ';'-separated
+  std::string moving_wall_name;     // a wall group that slides tangentially; empty: none
   dealii::Tensor<1, 3> moving_wall_velocity; // its velocity (m/s), tangential
 
   static void declare_parameters (dealii::ParameterHandler &prm);
   void        parse_parameters (dealii::ParameterHandler &prm);
+
+  /** The wall-condition choices of the gas and the solids, in Phase order. */
+  std::array<WallConditionChoice, 2> wall_choices () const
+  {
+    return {{gas_wall, solids_wall}};
+  }
+  /** What the wall conditions of each phase are built from. */
+  std::array<WallConditionSettings, 2>
+  wall_settings (const closures::KineticTheory *kinetic_theory,
+                 bool                           has_kinetic_theory) const
+  {
+    return {{{Phase::gas, gas_wall_friction, kinetic_theory, has_kinetic_theory},
+             {Phase::solids, solids_wall_friction, kinetic_theory, has_kinetic_theory}}};
+  }
+  /** Builds every named condition once: InputError naming the parameter where one
+   * cannot be (partial slip without friction, Johnson-Jackson without kinetic theory
+   * or for the gas). */
+  void check_wall_conditions (bool has_kinetic_theory) const;
 };
 } // namespace wetbed

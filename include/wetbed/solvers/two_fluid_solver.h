@@ -2,6 +2,7 @@
 
 #include <wetbed/assembly/flow/flow_assembler.h>
 #include <wetbed/assembly/volume_fraction_transport.h>
+#include <wetbed/boundary_conditions/wall_conditions.h>
 #include <wetbed/closures/closure_evaluator.h>
 #include <wetbed/closures/drag/drag_model.h>
 #include <wetbed/closures/kinetic_theory/kinetic_theory.h>
@@ -14,10 +15,9 @@
 #include <wetbed/mesh/partition_independent_triangulation.h>
 #include <wetbed/postprocess/bubble_analysis.h>
 #include <wetbed/postprocess/monitors.h>
-#include <wetbed/solvers/assembled_flow_operator.h>
-#include <wetbed/solvers/block_preconditioner.h>
-#include <wetbed/solvers/flow_linear_solver.h>
+#include <wetbed/solvers/flow_system.h>
 #include <wetbed/solvers/solve_history.h>
+#include <wetbed/solvers/solver_state.h>
 #include <wetbed/solvers/time_step_controller.h>
 
 #include <deal.II/base/conditional_ostream.h>
@@ -100,8 +100,6 @@ private:
   // set-up (two_fluid_solver.cc)
   void setup_dofs ();
   // its parts (source/solvers/dof_setup.cc)
-  /** A fresh flow preconditioner for this mesh (its build counts go on). */
-  void reset_flow_preconditioner ();
   /** The smallest node spacing (the CFL limit) and the moving wall's tangency check. */
   void measure_mesh ();
   /** The mesh and DoF counts and, on several ranks, the partition's balance. */
@@ -152,19 +150,23 @@ private:
   void restore_solids_mass (AlphaVector             &a,
                             double                   target,
                             const std::vector<bool> &candidate) const;
+  /** Each phase's condition on each wall group, once the mesh's boundaries are known. */
+  void make_wall_conditions ();
   /** Mesh, fields and time-stepping state from the checkpoint (checkpoint.cc). */
   void resume_from_checkpoint ();
   bool try_time_step (double dt, unsigned int bdf_order);
   /** The next step after one of length dt (TimeStepController, on this state). */
   double next_time_step (double dt) const;
-  /** The peak speeds of the current state (source/solvers/wave_speeds.cc). */
-  WaveSpeeds evaluate_wave_speeds () const;
+  /** A read-only view of the current state, for the postprocessors and the time-step
+   * controller (source/solvers/postprocessing.cc). */
+  SolverState<dim> state () const;
   /** Adds a monitors.csv row of the current state (every `monitor interval` steps). */
   void record_monitors ();
 
   // assembly (source/assembly/)
   /** The flow terms of this case, once the mesh's boundaries are known. */
-  void   setup_flow_assembler ();
+  std::unique_ptr<FlowAssembler<dim>> make_flow_assembler () const;
+  /** The flow system linearised about the current iterate (FlowSystem::assemble). */
   void   assemble_flow_system (const BDFCoefficients &bdf, double dt);
   double compaction_stiffness (double alpha_s, double alpha_m) const;
   /** alpha_s/R: the solids volume flux a unit compaction force gradient drives. */
@@ -224,38 +226,10 @@ private:
   /** Theta = the clamped nodal `solution`; false (rejection_reason) if not finite. */
   bool set_granular_temperature (const dealii::TrilinosWrappers::MPI::Vector &solution);
 
-  // linear solve (source/solvers/flow_solve.cc)
-  unsigned int solve_flow_system (double dt);
-
-  // postprocessing (source/postprocess/)
-  MonitorRow evaluate_monitors () const;
+  // postprocessing: the components in source/postprocess/ read state(); their
+  // orchestration (source/solvers/postprocessing.cc)
   /** The optional columns of monitors.csv this case asks for. */
   MonitorColumns monitor_columns () const;
-  /** Vertical forces (N, per metre depth in 2D) of the boundaries on the phases
-   * (source/postprocess/wall_forces.cc); collective. */
-  struct WallForces
-  {
-    double solids_wall = 0, gas_wall = 0, distributor = 0, outlet = 0;
-  };
-  WallForces evaluate_wall_forces () const;
-  /** The inertial side of the vertical momentum budget, after an accepted step of
-   * length dt (source/postprocess/momentum_budget.cc): the mixture momentum along -g
-   * (kg m/s, per metre depth in 2D), the difference between the conservative momentum
-   * change and the assembled inertia (the velocity times the continuity residual of the
-   * discrete fractions; large for the advective form), and the momentum flux out through
-   * the inlet and outlet (N); collective. */
-  struct InertialBudget
-  {
-    double momentum = 0, continuity_defect = 0, momentum_outflow = 0;
-  };
-  InertialBudget evaluate_inertial_budget (double dt) const;
-  /** The vertical forces of the inlet, the walls and the outlet on the mixture (N, per
-   * metre depth in 2D; in this order): the residuals of the velocity rows on each, from
-   * the unconstrained cell systems of the last flow assembly and the current solution
-   * (momentum_budget.cc); collective. */
-  std::array<double, 3> evaluate_boundary_reactions () const;
-  /** Plane averages, bed surface, point probes (source/postprocess/bed_profile.cc). */
-  void evaluate_bed_profile (MonitorRow &row) const;
   /** The bubble analysis of this mesh (its boundary ids), made right after the mesh is
    * read. */
   void make_bubble_analysis ();
@@ -290,6 +264,7 @@ private:
 
   PartitionIndependentTriangulation<dim> triangulation;
   Boundaries                             boundaries;
+  WallConditions                         wall_conditions;
   // the partition's cost model (mesh/wall face weight); unconnected: balance by count
   boost::signals2::scoped_connection cell_weights;
   dealii::MappingQ<dim>              mapping;
@@ -304,8 +279,7 @@ private:
   // hanging nodes of the alpha_s/Theta space (empty on uniform meshes)
   dealii::AffineConstraints<double> alpha_constraints;
 
-  AssembledFlowOperator flow_operator; // with the Schur mobility Laplacian
-  BlockVector           flow_rhs;
+  FlowSystem<dim> flow_system;
   // flow solutions (ghosted): current iterate, t_n, t_{n-1}
   BlockVector flow_solution, flow_old, flow_old2;
 
@@ -322,11 +296,8 @@ private:
   dealii::FunctionParser<3> held_velocity_function{3}; // u_s(x, y, z, t) where held
   std::shared_ptr<ManufacturedSolution<dim>> manufactured;
 
-  VolumeFractionTransport<dim>         transport;
-  std::unique_ptr<BlockPreconditioner> preconditioner;
-  std::unique_ptr<FlowAssembler<dim>>  flow_assembler;
-  FlowLinearSolver                     flow_linear_solver;
-  TimeStepController                   time_step_controller;
+  VolumeFractionTransport<dim> transport;
+  TimeStepController           time_step_controller;
   // compaction correction: M_L + dt K diag(P'_j) (solved) and dt K (the edge fluxes)
   dealii::TrilinosWrappers::SparseMatrix correction_matrix, compaction_flux_matrix;
   dealii::TrilinosWrappers::SparseMatrix granular_energy_matrix; // PDE model only
@@ -334,13 +305,6 @@ private:
   // vertical mixture momentum the velocity half of the compaction correction added in
   // the last outer iteration (N s, per metre depth in 2D), for the momentum budget
   double correction_momentum = 0;
-  // the volume fraction and flow state the last flow assembly linearised about
-  AlphaVector assembled_alpha;
-  BlockVector assembled_flow;
-  // for the consistent boundary reactions: the weighted boundary rows of the cells of
-  // the last flow assembly (FlowAssembler::BoundaryRowCapture)
-  std::vector<BoundaryCellSystem> boundary_cell_systems;
-  std::array<dealii::IndexSet, 3> boundary_velocity_dofs;
 
   Monitors                             monitors;
   std::unique_ptr<BubbleAnalysis<dim>> bubble_analysis;

@@ -30,22 +30,26 @@ void add_flow_terms (FlowAssembler<dim> &assembler, const FlowTermContext<dim> &
   assembler.add_term (std::make_unique<BodyForceTerm<dim>> (m));
   assembler.add_term (std::make_unique<SchurMobilityTerm<dim>> (m));
 
-  const bool johnson_jackson = bc.solids_wall == WallCondition::johnson_jackson;
-  if ((bc.solids_wall == WallCondition::partial_slip || johnson_jackson) &&
-      context.slip_walls)
+  // the walls: each phase's friction, and no penetration by Nitsche where it slips
+  const WallConditions &walls = context.walls;
+  const auto friction         = [] (const WallCondition &c) { return c.has_friction (); };
+  if (context.slip_walls &&
+      (walls.any (Phase::gas, friction) || walls.any (Phase::solids, friction)))
     assembler.add_term (std::make_unique<WallFrictionTerm<dim>> (
-        id.walls (),
-        id.ids (BoundaryType::moving_wall),
-        context.moving_wall_velocity,
-        bc.solids_wall_friction,
-        johnson_jackson ? context.closures->kinetic_theory () : nullptr));
-  const std::array<bool, 2> nitsche = {
-      {context.slip_walls && bc.nitsche && bc.gas_wall != WallCondition::no_slip,
-       context.slip_walls && bc.nitsche && bc.solids_wall != WallCondition::no_slip}};
-  if (nitsche[0] || nitsche[1])
+        walls, id.ids (BoundaryType::moving_wall), context.moving_wall_velocity));
+  std::map<dealii::types::boundary_id, std::array<bool, 2>> weak;
+  if (context.slip_walls && bc.nitsche)
+    for (const auto wall : id.walls ())
+    {
+      const std::array<bool, 2> slips = {
+          {!walls.at (wall, Phase::gas).prescribes_velocity (),
+           !walls.at (wall, Phase::solids).prescribes_velocity ()}};
+      if (slips[0] || slips[1])
+        weak[wall] = slips;
+    }
+  if (!weak.empty ())
     assembler.add_term (std::make_unique<NitscheWallTerm<dim>> (
-        id.walls (),
-        nitsche,
+        weak,
         bc.nitsche_penalty * std::pow (context.velocity_degree + 1.0, 2),
         m,
         *context.closures));

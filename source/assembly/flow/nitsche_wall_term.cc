@@ -12,8 +12,9 @@ void NitscheWallTerm<dim>::face (const typename FlowTerm<dim>::CellIterator &cel
                                  const FlowAssemblyState<dim>               &state,
                                  FlowCellCopy                               &copy) const
 {
-  const auto  &fv   = s.face_values;
-  const auto   face = cell->face (face_number);
+  const auto                &fv    = s.face_values;
+  const auto                 face  = cell->face (face_number);
+  const std::array<bool, 2> &slips = phases.at (face->boundary_id ());
   const double h = s.h, rho_g = material.gas_density, mu_g = material.gas_viscosity;
   for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
   {
@@ -35,14 +36,14 @@ void NitscheWallTerm<dim>::face (const typename FlowTerm<dim>::CellIterator &cel
              beta * h * h;
     };
     const std::array<NitschePhase, 2> nitsche = {
-        {NitschePhase{phases[0],
+        {NitschePhase{slips[0],
                       0,
                       1 - a,
                       (1 - a) * mu_g,
                       -2.0 / 3.0 * (1 - a) * mu_g,
                       scale ((1 - a) * mu_g, (1 - a) * rho_g, s.face_u[0][q].norm ()),
                       0.0},
-         NitschePhase{phases[1],
+         NitschePhase{slips[1],
                       dim,
                       a,
                       stress.shear_viscosity,

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <wetbed/assembly/flow/flow_assembler.h>
+#include <wetbed/boundary_conditions/wall_conditions.h>
 #include <wetbed/core/parameters.h>
 #include <wetbed/mesh/mesh_input.h>
 
@@ -12,6 +13,7 @@ struct FlowTermContext
 {
   const Parameters                 *parameters;
   Boundaries                        boundaries;
+  WallConditions                    walls;
   const closures::ClosureEvaluator *closures;
   FlowMaterial<dim>                 material;
   dealii::Tensor<1, dim>            moving_wall_velocity;
@@ -24,9 +26,9 @@ struct FlowTermContext
  * Adds the terms of the flow system this case needs, chosen from the parameters (as
  * Lethe's setup_assemblers): inertia, drag coupling, viscous stress, convection (with
  * streamline diffusion where stabilized), the pressure couplings, the body force and
- * the Schur mobility in the volume; on the boundary wall friction (partial slip or
- * Johnson-Jackson), Nitsche no-penetration and the outlet backflow where they apply. A
- * new term: one class deriving from FlowTerm and one line here.
+ * the Schur mobility in the volume; on the walls the friction of their conditions
+ * (partial slip, Johnson-Jackson, ...), Nitsche no-penetration and the outlet backflow
+ * where they apply. A new term: one class deriving from FlowTerm and one line here.
  */
 template <int dim>
 void add_flow_terms (FlowAssembler<dim> &assembler, const FlowTermContext<dim> &context);

@@ -1,40 +1,30 @@
 #pragma once
 
 #include <wetbed/assembly/flow/flow_term.h>
-#include <wetbed/closures/kinetic_theory/kinetic_theory.h>
+#include <wetbed/boundary_conditions/wall_conditions.h>
 
 #include <set>
 
 namespace wetbed
 {
 /**
- * The tangential solids traction on slipping walls, -C (P_t (u_s - u_w)), P_t = I - n n:
- * partial slip with a constant C, or Johnson-Jackson with the Robin coefficient
- * C_JJ(alpha_s, g0, Theta) of doc/theory.md, "Johnson-Jackson walls" (lagged). u_w is
- * the velocity of a moving wall (zero on fixed walls).
+ * The tangential traction of each phase on the walls whose condition has friction,
+ * -C P_t (u_k - u_w), P_t = I - n n, with C the condition's coefficient at the face
+ * point (a constant for partial slip, C_JJ(alpha_s, g0, Theta) of doc/theory.md,
+ * "Johnson-Jackson walls", lagged). u_w is the velocity of a moving wall (zero on fixed
+ * walls).
  */
 template <int dim>
 class WallFrictionTerm : public FlowTerm<dim>
 {
 public:
-  /** kinetic_theory: the Johnson-Jackson coefficient; null: the constant `friction`. */
-  WallFrictionTerm (std::set<dealii::types::boundary_id> walls,
+  WallFrictionTerm (WallConditions                       conditions,
                     std::set<dealii::types::boundary_id> moving_walls,
-                    const dealii::Tensor<1, dim>        &wall_velocity,
-                    double                               friction,
-                    const closures::KineticTheory       *kinetic_theory)
-      : walls (std::move (walls)), moving_walls (std::move (moving_walls)),
-        wall_velocity (wall_velocity), friction (friction),
-        kinetic_theory (kinetic_theory)
+                    const dealii::Tensor<1, dim>        &wall_velocity);
+  std::string name () const override { return "wall friction"; }
+  bool        acts_on_boundary (dealii::types::boundary_id id) const override
   {
-  }
-  std::string name () const override
-  {
-    return kinetic_theory ? "Johnson-Jackson wall friction" : "partial slip";
-  }
-  bool acts_on_boundary (dealii::types::boundary_id id) const override
-  {
-    return walls.count (id) > 0;
+    return friction_walls.count (id) > 0;
   }
   void face (const typename FlowTerm<dim>::CellIterator &cell,
              unsigned int                                face_number,
@@ -43,10 +33,9 @@ public:
              FlowCellCopy                               &copy) const override;
 
 private:
-  std::set<dealii::types::boundary_id> walls;
-  std::set<dealii::types::boundary_id> moving_walls; // a subset of walls
+  WallConditions                       conditions;
+  std::set<dealii::types::boundary_id> friction_walls; // of either phase
+  std::set<dealii::types::boundary_id> moving_walls;
   dealii::Tensor<1, dim>               wall_velocity;
-  double                               friction;
-  const closures::KineticTheory       *kinetic_theory;
 };
 } // namespace wetbed

@@ -1,0 +1,104 @@
+#pragma once
+
+#include <wetbed/assembly/flow/flow_assembler.h>
+#include <wetbed/core/parameters.h>
+#include <wetbed/mesh/boundaries.h>
+#include <wetbed/solvers/assembled_flow_operator.h>
+#include <wetbed/solvers/block_preconditioner.h>
+#include <wetbed/solvers/flow_linear_solver.h>
+#include <wetbed/solvers/solve_history.h>
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/lac/la_parallel_vector.h>
+
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace wetbed
+{
+/**
+ * The coupled (u_g, u_s, p') system of one outer iteration as a component: its terms
+ * (FlowAssembler), the operator they assemble (AssembledFlowOperator), the block
+ * preconditioner and the FGMRES solver with its reuse policy. It reads the state it is
+ * given and writes only itself and the solution it is asked to solve for. Besides the
+ * solution it yields what belongs to it: the linearisation point of its last assembly
+ * (alpha*, u*) and the consistent reactions of the inlet, the walls and the outlet
+ * (the residuals of their velocity rows, doc/theory.md "Bed and bubble analytics"), which
+ * the momentum budget of monitors.csv reads.
+ */
+template <int dim>
+class FlowSystem
+{
+public:
+  using BlockVector = dealii::TrilinosWrappers::MPI::BlockVector;
+  using AlphaVector = dealii::LinearAlgebra::distributed::Vector<double>;
+
+  FlowSystem (const Parameters           &parameters,
+              MPI_Comm                    communicator,
+              dealii::ConditionalOStream &pcout,
+              dealii::TimerOutput        &timer);
+
+  /** For a new mesh (after the DoFs and constraints): the operator's sparsity, the
+   * vectors, the boundary rows of the reactions, a fresh preconditioner with the
+   * velocity near-null space of this mesh (its build counts go on). */
+  void reinit (const dealii::Mapping<dim>              &mapping,
+               const dealii::DoFHandler<dim>           &flow_dof_handler,
+               const std::vector<dealii::IndexSet>     &owned,
+               const std::vector<dealii::IndexSet>     &relevant,
+               const dealii::AffineConstraints<double> &flow_constraints,
+               const dealii::AffineConstraints<double> &schur_constraints,
+               const Boundaries                        &boundaries,
+               const AlphaVector                       &alpha_layout);
+
+  /** The terms of this case (add_flow_terms); replaces any earlier ones. */
+  void set_assembler (std::unique_ptr<FlowAssembler<dim>> assembler);
+  bool has_assembler () const { return static_cast<bool> (assembler); }
+
+  /** The system linearised about `state` (its flow iterate and alpha_s), and that
+   * linearisation point kept. */
+  void assemble (const FlowAssemblyState<dim>            &state,
+                 const dealii::AffineConstraints<double> &flow_constraints,
+                 const dealii::AffineConstraints<double> &schur_constraints);
+
+  /** Solves the last assembled system from `solution` (ghosted: the lagged iterate
+   * on entry, the new one with constraints distributed on exit); the iterations, or
+   * invalid_unsigned_int when the solve failed with a fresh preconditioner (then
+   * `solution` is unchanged). */
+  unsigned int solve (BlockVector                             &solution,
+                      const dealii::AffineConstraints<double> &flow_constraints,
+                      double                                   dt,
+                      SolveHistory                            &history);
+
+  /** The vertical forces of the inlet, the walls and the outlet on the mixture (N, per
+   * metre depth in 2D; in this order): the residuals of their velocity rows in the
+   * unconstrained cell systems of the last assembly at `solution`; collective. */
+  std::array<double, 3> boundary_reactions (const BlockVector &solution) const;
+
+  /** The alpha_s and the flow iterate the last assembly linearised about. */
+  const AlphaVector &linearisation_alpha () const { return assembled_alpha; }
+  const BlockVector &linearisation_flow () const { return assembled_flow; }
+
+  const BlockPreconditioner &block_preconditioner () const { return *preconditioner; }
+  const FlowAssembler<dim>  &flow_assembler () const { return *assembler; }
+
+private:
+  const Parameters                    &parameters;
+  MPI_Comm                             communicator;
+  dealii::TimerOutput                 &timer;
+  std::vector<dealii::IndexSet>        owned;
+  dealii::Tensor<1, dim>               up;
+  std::unique_ptr<FlowAssembler<dim>>  assembler;
+  AssembledFlowOperator                op; // with the Schur mobility Laplacian
+  BlockVector                          rhs;
+  std::unique_ptr<BlockPreconditioner> preconditioner;
+  FlowLinearSolver                     linear_solver;
+  AlphaVector                          assembled_alpha;
+  BlockVector                          assembled_flow;
+  // the velocity DoFs of the inlet, the walls and the outlet, and the weighted
+  // unconstrained rows of the cells that hold them in the last assembly
+  std::array<dealii::IndexSet, 3> boundary_velocity_dofs;
+  std::vector<BoundaryCellSystem> boundary_cell_systems;
+};
+} // namespace wetbed

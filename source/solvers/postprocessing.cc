@@ -1,0 +1,121 @@
+#include <wetbed/postprocess/bed_monitors.h>
+#include <wetbed/postprocess/spectrum.h>
+#include <wetbed/solvers/two_fluid_solver.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <fstream>
+#include <sstream>
+
+/*
+ * The solver's side of the postprocessing: the read-only view of its state that the
+ * postprocessors (source/postprocess/) take, and when each runs.
+ */
+namespace wetbed
+{
+using namespace dealii;
+
+template <int dim>
+SolverState<dim> TwoFluidSolver<dim>::state () const
+{
+  return SolverState<dim>{parameters,
+                          communicator,
+                          triangulation,
+                          boundaries,
+                          wall_conditions,
+                          mapping,
+                          flow_fe,
+                          flow_dof_handler,
+                          alpha_fe,
+                          alpha_dof_handler,
+                          transport.lumped_mass (),
+                          flow_solution,
+                          flow_old2, // after the step the history has shifted
+                          alpha,
+                          alpha_old2,
+                          theta,
+                          closure_evaluator,
+                          kinetic_theory,
+                          flow_system,
+                          moving_wall_velocity (),
+                          time,
+                          previous_time_step,
+                          inlet_superficial_velocity (time),
+                          step_number,
+                          rejected_steps,
+                          last_krylov_iterations,
+                          initial_solids_mass,
+                          correction_momentum,
+                          granular_energy_budget};
+}
+
+template <int dim>
+void TwoFluidSolver<dim>::record_monitors ()
+{
+  TimerOutput::Scope scope (timer, "monitors");
+  monitors.add (evaluate_monitors (state ()));
+}
+
+template <int dim>
+void TwoFluidSolver<dim>::make_bubble_analysis ()
+{
+  BubbleCriteria criteria;
+  criteria.gas_fraction_threshold = parameters.bubble_analysis.gas_fraction_threshold;
+  criteria.minimum_diameter       = parameters.bubble_analysis.minimum_diameter;
+  criteria.freeboard_boundaries   = boundaries.ids (BoundaryType::outlet);
+  criteria.open_boundaries = boundaries.ids ({BoundaryType::inlet, BoundaryType::outlet});
+  unsigned int         vertical = 0; // the axis gravity points along
+  const Tensor<1, dim> up       = upward_direction<dim> (parameters.physical.gravity);
+  for (unsigned int d = 1; d < dim; ++d)
+    if (std::abs (up[d]) > std::abs (up[vertical]))
+      vertical = d;
+  bubble_analysis = std::make_unique<BubbleAnalysis<dim>> (
+      parameters.bubble_analysis, criteria, triangulation, vertical, communicator);
+}
+
+template <int dim>
+void TwoFluidSolver<dim>::analyse_bubbles ()
+{
+  if (!parameters.bubble_analysis.enabled ||
+      step_number % parameters.bubble_analysis.interval != 0)
+    return;
+  TimerOutput::Scope scope (timer, "bubble analysis");
+  alpha.update_ghost_values ();
+  bubble_analysis->analyse (step_number, time, mapping, alpha_dof_handler, alpha);
+}
+
+template <int dim>
+void TwoFluidSolver<dim>::write_spectra () const
+{
+  const auto &sp = parameters.spectrum;
+  if (!sp.enabled || time <= sp.start_time ||
+      Utilities::MPI::this_mpi_process (communicator) != 0)
+    return;
+  const std::string folder = parameters.output.folder;
+  try
+  {
+    std::ostringstream table;
+    write_monitor_spectra (
+        folder + "/monitors.csv", {}, sp.start_time, sp.segments, table);
+    std::ofstream (folder + "/spectrum.csv") << table.str ();
+    std::istringstream lines (table.str ());
+    for (std::string line; std::getline (lines, line) && line[0] == '#';)
+      pcout << "Spectrum " << line.substr (2) << std::endl;
+  }
+  catch (const std::invalid_argument &e) // too few samples: the run is too short
+  {
+    pcout << "Spectrum: not written (" << e.what () << ")" << std::endl;
+  }
+}
+
+template SolverState<2> TwoFluidSolver<2>::state () const;
+template SolverState<3> TwoFluidSolver<3>::state () const;
+template void           TwoFluidSolver<2>::record_monitors ();
+template void           TwoFluidSolver<3>::record_monitors ();
+template void           TwoFluidSolver<2>::make_bubble_analysis ();
+template void           TwoFluidSolver<3>::make_bubble_analysis ();
+template void           TwoFluidSolver<2>::analyse_bubbles ();
+template void           TwoFluidSolver<3>::analyse_bubbles ();
+template void           TwoFluidSolver<2>::write_spectra () const;
+template void           TwoFluidSolver<3>::write_spectra () const;
+} // namespace wetbed
