@@ -30,5 +30,7 @@ struct BoundaryConditionParameters
 
   static void declare_parameters (dealii::ParameterHandler &prm);
   void        parse_parameters (dealii::ParameterHandler &prm);
+  /** The inlet velocity finite at 400 times over [0, end_time]; InputError if not. */
+  void check_time_span (double end_time) const;
 };
 } // namespace wetbed
