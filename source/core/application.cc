@@ -171,9 +171,14 @@ int run_case (const Parameters &parameters, const dealii::ParameterHandler &prm)
     // whatever stops a resume before the run continues is a problem of the checkpoint
     // (the input), not a failed run
     if (resume)
+    {
+      std::string reason = one_line (e.what ());
+      if (reason.rfind ("checkpoint/resume: ", 0) == 0)
+        reason = reason.substr (19);
       throw InputError ("checkpoint/resume",
                         "cannot resume from '" + parameters.output.folder +
-                            "/checkpoint': " + one_line (e.what ()));
+                            "/checkpoint': " + reason);
+    }
     throw;
   }
   mesh.commit ();
