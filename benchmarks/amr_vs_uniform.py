@@ -96,6 +96,8 @@ def run(name):
             if f.endswith(".csv") or f == "mesh.msh":
                 shutil.copy2(os.path.join(source, f), folder)
         command.append("--resume")
+    else:
+        command.append("--overwrite")  # a rerun replaces the earlier results
     with open(log, "w") as out:
         subprocess.run(command, stdout=out, stderr=subprocess.STDOUT)
     return name

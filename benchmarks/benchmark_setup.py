@@ -56,7 +56,7 @@ def run_resumable(command, folder, log, wall_file, resumable=True, env=None):
     earlier = float(open(wall_file).read()) if resume else 0.0
     begin = time.time()
     with open(log, "a" if resume else "w") as out:
-        process = subprocess.Popen(command + (["--resume"] if resume else []),
+        process = subprocess.Popen(command + (["--resume"] if resume else ["--overwrite"]),
                                    stdout=out, stderr=subprocess.STDOUT, env=env)
         while process.poll() is None:
             time.sleep(5)
@@ -163,7 +163,7 @@ def solver_run(root, work, name, base, end_time, sections):
                  "subsection bubble analysis\n set enabled = false\nend\n")
     prm, folder, log = write_case(work, name, base, end_time, sections, field_interval=1000)
     with open(log, "w") as out:
-        subprocess.run([os.path.join(root, "build", "wetbed"), prm], stdout=out, stderr=subprocess.STDOUT, check=True)
+        subprocess.run([os.path.join(root, "build", "wetbed"), prm, "--overwrite"], stdout=out, stderr=subprocess.STDOUT, check=True)
     rows = list(csv.DictReader(open(os.path.join(folder, "monitors.csv"))))[1:]
     text = open(log).read()
     solves = int(re.search(r"\| Krylov solve\s*\|\s*(\d+)", text).group(1))

@@ -38,7 +38,7 @@ else:
     os.makedirs(args.work, exist_ok=True)
     prm, folder, log = write_case(args.work, "bubbling_bed_2d", read_case("bubbling_bed_2d"), args.end_time)
     with open(log, "w") as out:
-        subprocess.run([os.path.join(root, "build", "wetbed"), prm], stdout=out, stderr=subprocess.STDOUT, check=True)
+        subprocess.run([os.path.join(root, "build", "wetbed"), prm, "--overwrite"], stdout=out, stderr=subprocess.STDOUT, check=True)
 
 text = open(log).read() if log and os.path.exists(log) else ""
 

@@ -34,7 +34,7 @@ for level in ([] if args.replot else args.levels):
     prm, folder, _ = write_case(work, f"level_{level}", base, args.end_time,
                                 f"\nsubsection mesh\n  set initial refinement = {level}\nend\n",
                                 field_interval=0, progress_interval=100000)
-    out = subprocess.run(["mpirun", "--oversubscribe", "-np", str(args.ranks), os.path.join(root, "build", "wetbed"), prm],
+    out = subprocess.run(["mpirun", "--oversubscribe", "-np", str(args.ranks), os.path.join(root, "build", "wetbed"), prm, "--overwrite"],
                          capture_output=True, text=True, env=env).stdout
     cells = int(re.search(r"Mesh: (\d+) cells; flow DoFs (\d+) \(u_g, u_s\) \+ (\d+)", out).group(1))
     dofs = [int(x) for x in re.search(r"flow DoFs (\d+) \(u_g, u_s\) \+ (\d+)", out).groups()]

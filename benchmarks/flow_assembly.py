@@ -42,7 +42,7 @@ for repeat in range(args.repeats):
     for index, (name, command, threads) in enumerate(configurations):
         prm, folder, log = write_case(work, f"run_{index}", read_case(args.case), args.end_time,
                                       field_interval=0, progress_interval=1000)
-        full = command + [prm] + (["--threads", str(threads)] if threads else [])
+        full = command + [prm, "--overwrite"] + (["--threads", str(threads)] if threads else [])
         out = subprocess.run(full, capture_output=True, text=True)
         if out.returncode != 0:
             raise SystemExit(f"{' '.join(full)} failed ({out.returncode}):\n{out.stdout[-2000:]}{out.stderr[-2000:]}")

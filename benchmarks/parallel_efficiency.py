@@ -39,7 +39,7 @@ for case, end in (("bubbling_bed_2d", args.end_2d), ("column_3d", args.end_3d)):
     for ranks in (1, 2):
         prm, folder, log = write_case(work, f"{case}_{ranks}", read_case(case), end,
                                       "\nsubsection checkpoint\n set at end = false\nend\n", field_interval=1000)
-        command = [os.path.join(root, "build", "wetbed"), prm]
+        command = [os.path.join(root, "build", "wetbed"), prm, "--overwrite"]
         if ranks > 1:
             command = ["mpirun", "--oversubscribe", "-np", str(ranks)] + command
         with open(log, "w") as out:

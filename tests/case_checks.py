@@ -26,8 +26,8 @@ def expect(condition, what):
 
 def run(case, overrides="", ranks=1, folder=None, resume=False, expected_exit=0):
     """Copies tests/cases/CASE.prm (or prm/CASE.prm) with absolute mesh paths and the
-    overrides appended, runs it (continuing its checkpoint with resume), returns the
-    monitors rows."""
+    overrides appended, runs it (continuing its checkpoint with resume, else replacing
+    the folder's earlier results with --overwrite), returns the monitors rows."""
     path = os.path.join(source, "tests", "cases", case + ".prm")
     if not os.path.isfile(path):
         path = os.path.join(source, "prm", case + ".prm")
@@ -37,7 +37,9 @@ def run(case, overrides="", ranks=1, folder=None, resume=False, expected_exit=0)
     prm = os.path.join(work, os.path.basename(folder) + ".prm")
     open(prm, "w").write(text)
     command = [wetbed, prm] if ranks == 1 else ["mpirun", "--oversubscribe", "-np", str(ranks), wetbed, prm]
-    p = subprocess.run(command + (["--resume"] if resume else []), capture_output=True, text=True, env=env)
+    # a new run replaces what an earlier ctest run left in its folder (--overwrite); a
+    # resumed one continues the checkpoint there
+    p = subprocess.run(command + (["--resume"] if resume else ["--overwrite"]), capture_output=True, text=True, env=env)
     run.stdout = p.stdout
     if p.returncode != expected_exit:
         print(p.stdout[-2000:], p.stderr[-2000:])

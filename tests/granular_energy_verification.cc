@@ -58,7 +58,7 @@ case_text (const Case &c, const std::string &source, const std::string &folder)
     << "subsection boundary conditions\n set inlet superficial velocity = 0\n"
     << " set hold solids = true\n set held solids velocity = " << c.held_velocity
     << "\nend\n"
-    << "subsection initial conditions\n set bed height = 2\n set bed solids fraction = "
+    << "subsection initial conditions\n set bed height = 1\n set bed solids fraction = "
     << alpha_s << "\n set gas at inlet velocity = false\nend\n"
     << "subsection time stepping\n set end time = " << c.end_time
     << "\n set initial time step = " << c.time_step

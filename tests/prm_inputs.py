@@ -4,23 +4,43 @@ a one-line message naming the parameter (or file) and no change to existing resu
 
 usage: prm_inputs.py WETBED_EXECUTABLE SOURCE_DIR WORK_DIR
 """
+import fcntl
 import hashlib
+import math
 import os
 import shutil
+import signal
 import subprocess
 import sys
+import time
 
 wetbed, source, work = (os.path.abspath(a) for a in sys.argv[1:4])
 os.makedirs(work, exist_ok=True)
 failures = []
 
 
-def run(prm_text, name):
+env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+
+
+def run(prm_text, name, args=(), cwd=None, ranks=1):
     path = os.path.join(work, name + ".prm")
     with open(path, "w") as f:
         f.write(prm_text)
-    p = subprocess.run([wetbed, path], capture_output=True, text=True, timeout=600)
+    command = [wetbed, path] + list(args)
+    if ranks > 1:
+        command = ["mpirun", "--oversubscribe", "-np", str(ranks)] + command
+    p = subprocess.run(command, capture_output=True, text=True, timeout=600, cwd=cwd, env=env)
     return p.returncode, p.stdout, p.stderr
+
+
+def folder_digest(folder):
+    """sha256 of every file under FOLDER by relative path: a byte-for-byte picture."""
+    digest = {}
+    for directory, _, files in os.walk(folder):
+        for name in files:
+            path = os.path.join(directory, name)
+            digest[os.path.relpath(path, folder)] = hashlib.sha256(open(path, "rb").read()).hexdigest()
+    return digest
 
 
 def override(base, lines):
@@ -47,7 +67,7 @@ for prm in sorted(os.listdir(os.path.join(source, "prm"))):
     folder = os.path.join(work, "good_" + prm[:-4])
     text = override(text, f"subsection time stepping\n set end time = 3e-4\n set initial time step = 1e-4\nend\n"
                           f"subsection output\n set folder = {folder}\n set field interval = 0\nend")
-    code, out, err = run(text, "good_" + prm[:-4])
+    code, out, err = run(text, "good_" + prm[:-4], ["--overwrite"])  # the folder may hold the last corpus run
     if code != 0 or not os.path.isfile(os.path.join(folder, "monitors.csv")):
         failures.append(f"{prm}: exit {code}: {err.strip()[-300:]}")
     else:
@@ -57,12 +77,20 @@ for prm in sorted(os.listdir(os.path.join(source, "prm"))):
 base = with_mesh(open(os.path.join(source, "prm", "bubbling_bed_2d.prm")).read(), "base")
 results = os.path.join(work, "existing_results")
 base = override(base, f"subsection output\n set folder = {results}\n set field interval = 0\nend")
+shutil.rmtree(results, ignore_errors=True)
 code, _, err = run(override(base, "subsection time stepping\n set end time = 2e-4\nend"), "base_run")
+# the bad inputs below may overwrite the base run's results: a refused input still must
+# change nothing there (checked file by file after each case)
+base = override(base, "subsection output\n set overwrite = true\nend")
 if code != 0:
     failures.append("base run failed: " + err)
 monitors = os.path.join(results, "monitors.csv")
 digest = hashlib.sha256(open(monitors, "rb").read()).hexdigest() if os.path.isfile(monitors) else None
+results_digest = folder_digest(results)
+if "mesh.msh" not in results_digest:
+    failures.append("the base run wrote no mesh.msh")
 
+MESHES = os.path.join(source, "tests", "meshes") + "/"
 cases = [
     ("syntax error", "subsection drag\n set model Gidaspow\nend", "cannot be parsed"),
     ("unknown parameter", "subsection drag\n set colour = red\nend", "colour"),
@@ -130,37 +158,97 @@ cases = [
     ("moving wall not in the mesh", "subsection boundary conditions\n set moving wall = lid\nend", "boundary conditions/moving wall"),
     ("moving wall that is the inlet", "subsection boundary conditions\n set moving wall = inlet\nend", "boundary conditions/moving wall"),
     ("moving wall velocity not a number", "subsection boundary conditions\n set moving wall velocity = 0, fast, 0\nend", "boundary conditions/moving wall velocity"),
-    ("moving wall velocity through the wall", f"subsection mesh\n set file = {os.path.join(source, 'meshes', 'couette_cell_2d.geo')}\n set inlet =\n set outlet =\n set periodic boundaries = bottom, top\nend\nsubsection boundary conditions\n set moving wall = moving wall\n set moving wall velocity = 0.5, 0, 0\nend", "boundary conditions/moving wall velocity"),
+    ("moving wall velocity through the wall", f"subsection mesh\n set file = {os.path.join(source, 'meshes', 'couette_cell_2d.geo')}\n set inlet =\n set outlet =\n set periodic boundaries = bottom, top\nend\nsubsection boundary conditions\n set moving wall = moving wall\n set moving wall velocity = 0.5, 0, 0\nend\n"
+     # the bed and the probe inside the 0.6 mm tall cell: the velocity is what is wrong
+     "subsection initial conditions\n set bed height = 0.0005\nend\nsubsection output\n set probe heights =\nend", "boundary conditions/moving wall velocity"),
     ("unwritable output folder", "subsection output\n set folder = /proc/wetbed-output\nend", "output/folder"),
+    # every number finite (issue 30)
+    ("gravity -inf", "subsection physical properties\n set gravity = 0, -inf, 0\nend", "physical properties/gravity"),
+    ("gravity nan", "subsection physical properties\n set gravity = nan, -9.81, 0\nend", "physical properties/gravity"),
+    ("gravity 1e999", "subsection physical properties\n set gravity = 0, -1e999, 0\nend", "physical properties/gravity"),
+    ("particle diameter inf", "subsection physical properties\n set particle diameter = inf\nend", "particle diameter"),
+    ("Nitsche penalty inf", "subsection boundary conditions\n set Nitsche penalty = inf\nend", "Nitsche penalty"),
+    ("inlet velocity 1/0", "subsection boundary conditions\n set inlet superficial velocity = 1/0\nend", "boundary conditions/inlet superficial velocity"),
+    ("inlet velocity log(t)", "subsection boundary conditions\n set inlet superficial velocity = log(t)\nend", "boundary conditions/inlet superficial velocity"),
+    ("inlet velocity NaN after t = 1 s", "subsection boundary conditions\n set inlet superficial velocity = sqrt(1 - t)\nend", "boundary conditions/inlet superficial velocity"),
+    ("inlet velocity 1e999*t", "subsection boundary conditions\n set inlet superficial velocity = 1e999*t\nend", "boundary conditions/inlet superficial velocity"),
+    ("held solids velocity 1/0", "subsection boundary conditions\n set hold solids = true\n set held solids velocity = 0; 1/0; 0\nend", "boundary conditions/held solids velocity"),
+    ("held solids velocity log(x) at the wall", "subsection boundary conditions\n set hold solids = true\n set held solids velocity = 0; log(x); 0\nend", "boundary conditions/held solids velocity"),
+    ("moving wall velocity inf", "subsection boundary conditions\n set moving wall velocity = inf, 0, 0\nend", "boundary conditions/moving wall velocity"),
+    ("point probe at infinity", "subsection bed monitors\n set point probes = 0.01, inf\nend", "bed monitors/point probes"),
+    # consistent with the mesh (checked right after it is read, before anything is written)
+    ("gravity from the inlet to the outlet", "subsection physical properties\n set gravity = 0, 9.81, 0\nend", "physical properties/gravity"),
+    ("gravity across the column", "subsection physical properties\n set gravity = 9.81, 0, 0\nend", "physical properties/gravity"),
+    ("bed above the domain", "subsection initial conditions\n set bed height = 0.5\nend", "initial conditions/bed height"),
+    ("probe height above the domain", "subsection output\n set probe heights = 0.076, 0.5\nend", "output/probe heights"),
+    ("pressure plane above the domain", "subsection bed monitors\n set pressure drop between = 0.05, 0.4\nend", "bed monitors/pressure drop between"),
+    ("point probe beside the domain", "subsection bed monitors\n set point probes = 0.2, 0.1\nend", "bed monitors/point probes"),
+    ("point probe below the domain", "subsection bed monitors\n set point probes = 0.01, 0.02; 0.01, -0.05\nend", "bed monitors/point probes"),
+    # all-quad/hex meshes
+    ("triangles (no Recombine)", "subsection mesh\n set file = " + MESHES + "column_2d_triangles.geo\nend", ("mesh/file", "Recombine")),
+    ("tetrahedra (no Recombine)", "set dimension = 3\nsubsection mesh\n set file = " + MESHES + "box_3d_tetrahedra.geo\nend", ("mesh/file", "Recombine")),
+    ("a .msh of triangles", "triangle msh", ("mesh/file", "Recombine")),
+    ("gmsh syntax error", "syntax error geo", ("mesh/file", "gmsh failed", "syntax error")),
+    # refinement against the memory
+    ("initial refinement 10", "subsection mesh\n set initial refinement = 10\nend", ("mesh/initial refinement", "GB")),
+    ("adaptive maximum level 12", "subsection adaptive refinement\n set enabled = true\n set maximum level = 12\nend", ("adaptive refinement/maximum level", "GB")),
+    ("3D initial refinement 7", "set dimension = 3\nsubsection mesh\n set file = " + os.path.join(source, "meshes", "column_3d.geo") + "\n set initial refinement = 7\nend\nsubsection physical properties\n set gravity = 0, 0, -9.81\nend\nsubsection output\n set probe heights =\nend", ("mesh/initial refinement", "GB")),
+    # resume problems exit 2
+    ("resume without monitors.csv", "resume without monitors", "checkpoint/resume"),
+    ("resume with a truncated monitors.csv", "resume truncated monitors", "checkpoint/resume"),
 ]
 corrupt = os.path.join(work, "corrupt.msh")
 with open(corrupt, "w") as f:
     f.write("$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$PhysicalNames\n3\n1 1 \"inlet\"\n1 2 \"outlet\"\n1 3 \"wall\"\n$EndPhysicalNames\n$Nodes\ngarbage\n")
+triangles_msh = os.path.join(work, "triangles.msh")
+with open(triangles_msh, "w") as f:  # two triangles of a unit square, gmsh 2.2
+    f.write("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n4\n1 1 \"inlet\"\n1 2 \"outlet\"\n1 3 \"wall\"\n2 10 \"fluid\"\n$EndPhysicalNames\n"
+            "$Nodes\n4\n1 0 0 0\n2 0.05 0 0\n3 0.05 0.3 0\n4 0 0.3 0\n$EndNodes\n$Elements\n6\n"
+            "1 1 2 1 1 1 2\n2 1 2 2 2 3 4\n3 1 2 3 3 2 3\n4 1 2 3 3 4 1\n5 2 2 10 1 1 2 3\n6 2 2 10 1 1 3 4\n$EndElements\n")
+syntax_geo = os.path.join(work, "syntax_error.geo")
+with open(syntax_geo, "w") as f:
+    f.write(open(os.path.join(source, "meshes", "column_2d.geo")).read().replace("Plane Surface(1) = {1};", "Plane Surface(1) = {1;"))
+special = {"triangle msh": f"subsection mesh\n set file = {triangles_msh}\nend",
+           "syntax error geo": f"subsection mesh\n set file = {syntax_geo}\nend"}
 # copies of the base run's folder (it wrote a checkpoint at its end) with one file spoilt
 damaged = {}
-for kind, spoil in (("damaged checkpoint", "triangulation_fixed.data"), ("garbage checkpoint", "state")):
+for kind, spoil in (("damaged checkpoint", "checkpoint/triangulation_fixed.data"), ("garbage checkpoint", "checkpoint/state"),
+                    ("resume without monitors", "monitors.csv"), ("resume truncated monitors", "monitors.csv")):
     folder = os.path.join(work, kind.replace(" ", "_"))
     shutil.rmtree(folder, ignore_errors=True)
     shutil.copytree(results, folder)
-    with open(os.path.join(folder, "checkpoint", spoil), "r+b") as f:
-        f.seek(40)
-        f.write(b"garbage")
+    if kind == "resume without monitors":
+        os.remove(os.path.join(folder, spoil))
+    elif kind == "resume truncated monitors":
+        with open(os.path.join(folder, spoil), "r+b") as f:
+            f.truncate(len(f.readline()))
+    else:
+        with open(os.path.join(folder, spoil), "r+b") as f:
+            f.seek(40)
+            f.write(b"garbage")
     damaged[kind] = (f"subsection checkpoint\n set resume = true\nend\nsubsection output\n set folder = {folder}\nend",
-                     os.path.join(folder, "monitors.csv"), hashlib.sha256(open(os.path.join(folder, "monitors.csv"), "rb").read()).hexdigest())
+                     folder, folder_digest(folder))
 for description, lines, expected in cases:
     if lines is None:
         lines = f"subsection mesh\n set file = {corrupt}\nend"
+    lines = special.get(lines, lines)
     spoilt = damaged.get(lines)
     if spoilt:
         lines = spoilt[0]
     code, out, err = run(override(base, lines), "bad")
     message = err.strip().splitlines()[-1] if err.strip() else ""
-    if code != 2 or expected not in message:
+    expected = expected if isinstance(expected, tuple) else (expected,)
+    if code != 2 or not all(e in message for e in expected):
         failures.append(f"bad input '{description}': exit {code}, message '{message[:300]}'")
+    elif len(err.strip().splitlines()) != 1:
+        failures.append(f"bad input '{description}': {len(err.strip().splitlines())} lines on stderr, not one: {err[:300]!r}")
     else:
         print(f"ok   {description}: {message[:140]}")
-    if spoilt and hashlib.sha256(open(spoilt[1], "rb").read()).hexdigest() != spoilt[2]:
-        failures.append(f"bad input '{description}': the run's monitors.csv was changed")
+    if spoilt and folder_digest(spoilt[1]) != spoilt[2]:
+        failures.append(f"bad input '{description}': the run's files in {spoilt[1]} were changed")
+    if folder_digest(results) != results_digest:
+        failures.append(f"bad input '{description}': the previous run's files in {results} were changed")
+        results_digest = folder_digest(results)
 if digest and hashlib.sha256(open(monitors, "rb").read()).hexdigest() != digest:
     failures.append("an existing monitors.csv was changed by a bad-input run")
 
@@ -201,9 +289,154 @@ for args, expected in (([monitors, "--columns", "colour"], "colour"), (["/nonexi
     if p.returncode != 2 or expected not in p.stderr:
         failures.append(f"wetbed spectrum {' '.join(args)}: exit {p.returncode}, '{p.stderr.strip()}'")
 
+# 6. output folders, no shell, spectrum ranges (issue 30): each check is one name in
+# `checks`; byte-for-byte pictures of the folders they must not change
+checks = []
+
+
+def check(name, condition, detail=""):
+    checks.append(name)
+    if condition:
+        print(f"ok   {name}")
+    else:
+        failures.append(f"{name}: {detail}"[:600])
+
+
+def last_line(err):
+    return err.strip().splitlines()[-1] if err.strip() else ""
+
+
+def copy_of_results(name):
+    folder = os.path.join(work, name)
+    shutil.rmtree(folder, ignore_errors=True)
+    shutil.copytree(results, folder)
+    return folder
+
+
+def case_into(folder, extra=""):
+    """The base case into FOLDER, a few steps, no overwrite unless EXTRA says so."""
+    return override(base, f"subsection output\n set folder = {folder}\n set overwrite = false\nend\n"
+                          "subsection time stepping\n set end time = 2e-4\nend\n" + extra)
+
+
+def refused(name, text, where, folder=None, args=(), cwd=None, ranks=1, contains=""):
+    before = folder_digest(folder) if folder and os.path.isdir(folder) else None
+    code, _, err = run(text, name.replace(" ", "_").replace("/", "_")[:60], args, cwd, ranks)
+    # under mpirun its notice about the exit status follows wetbed's one line
+    errors = [line for line in err.splitlines() if line.startswith("wetbed: error:")]
+    message = errors[-1] if ranks > 1 and len(errors) == 1 else last_line(err)
+    ok = code == 2 and where in message and contains in message
+    if ok and before is not None and folder_digest(folder) != before:
+        ok, message = False, f"the files in {folder} were changed"
+    check(name, ok, f"exit {code}, '{message}'")
+
+
+# a second run into a folder in use: the lock (held here as a running wetbed holds it)
+locked = copy_of_results("locked")
+with open(os.path.join(locked, ".wetbed.lock"), "a") as lock:
+    fcntl.flock(lock, fcntl.LOCK_EX)
+    refused("folder in use (locked)", case_into(locked, "subsection output\n set overwrite = true\nend"),
+            "output/folder", locked, contains="in use")
+    refused("folder in use, resumed", case_into(locked, "subsection checkpoint\n set resume = true\nend"),
+            "output/folder", locked, contains="in use")
+    if shutil.which("mpirun"):
+        refused("folder in use on 2 ranks", case_into(locked, "subsection output\n set overwrite = true\nend"),
+                "output/folder", locked, ranks=2, contains="in use")
+# two real runs into one folder: the second is refused, the first finishes intact
+busy = os.path.join(work, "busy")
+shutil.rmtree(busy, ignore_errors=True)
+first_prm = os.path.join(work, "busy_first.prm")
+with open(first_prm, "w") as f:
+    f.write(override(base, f"subsection output\n set folder = {busy}\nend\nsubsection time stepping\n set end time = 1\nend"))
+first = subprocess.Popen([wetbed, first_prm], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+for _ in range(600):
+    if os.path.isfile(os.path.join(busy, "monitors.csv")) or first.poll() is not None:
+        break
+    time.sleep(0.1)
+code, _, err = run(case_into(busy, "subsection output\n set overwrite = true\nend"), "busy_second")
+first.send_signal(signal.SIGTERM)
+first_code = first.wait(timeout=300)
+rows = open(os.path.join(busy, "monitors.csv"), "rb").read() if os.path.isfile(os.path.join(busy, "monitors.csv")) else b""
+n_lines = rows.count(b"\n")
+check("two runs into one folder", code == 2 and "in use" in last_line(err) and first_code in (0, 4)
+      and b"\0" not in rows and n_lines >= 2,
+      f"second exit {code} '{last_line(err)}', first exit {first_code}, {n_lines} lines")
+# a previous run's results: refused unless overwrite
+refused("previous results without overwrite", case_into(copy_of_results("previous")), "output/folder",
+        os.path.join(work, "previous"), contains="--overwrite")
+only_checkpoint = copy_of_results("previous_checkpoint")
+os.remove(os.path.join(only_checkpoint, "monitors.csv"))
+refused("previous checkpoint without overwrite", case_into(only_checkpoint), "output/folder", only_checkpoint)
+for name, extra, args in (("overwrite = true", "subsection output\n set overwrite = true\nend", []),
+                          ("--overwrite", "", ["--overwrite"])):
+    folder = copy_of_results("overwritten")
+    open(os.path.join(folder, "fields_00007.pvtu"), "w").write("stale")
+    code, _, err = run(case_into(folder, extra), "overwritten", args)
+    check(f"{name} replaces a previous run", code == 0 and not os.path.exists(os.path.join(folder, "fields_00007.pvtu"))
+          and os.path.isfile(os.path.join(folder, "monitors.csv")), f"exit {code} '{last_line(err)}'")
+# nothing is created before the input is checked
+empty_cwd = os.path.join(work, "empty_cwd")
+shutil.rmtree(empty_cwd, ignore_errors=True)
+os.makedirs(empty_cwd)
+code, _, err = run("", "empty", cwd=empty_cwd)
+check("an empty .prm creates nothing", code == 2 and os.listdir(empty_cwd) == [], f"exit {code}, left {os.listdir(empty_cwd)}")
+new_top = os.path.join(work, "never_created")
+shutil.rmtree(new_top, ignore_errors=True)
+for name, extra in (("missing mesh", f"subsection mesh\n set file = {os.path.join(work, 'missing.geo')}\nend"),
+                    ("unknown physical group", "subsection mesh\n set wall = side\nend"),
+                    ("bed above the domain", "subsection initial conditions\n set bed height = 0.5\nend"),
+                    ("triangles", f"subsection mesh\n set file = {MESHES}column_2d_triangles.geo\nend"),
+                    # refused after the mesh was read and accepted (the pending mesh goes too)
+                    ("moving wall velocity through the wall", [c for c in cases if c[0] == "moving wall velocity through the wall"][0][1])):
+    code, _, err = run(case_into(os.path.join(new_top, "a", "b"), extra), "never_created")
+    check(f"{name} into a new folder creates nothing", code == 2 and not os.path.exists(new_top),
+          f"exit {code} '{last_line(err)}', exists: {os.path.exists(new_top)}")
+check("resume into a missing folder creates nothing", not os.path.exists(os.path.join(work, "never_run")))
+a_file = os.path.join(work, "a_file")
+open(a_file, "w").write("not a folder")
+refused("output folder is a file", case_into(a_file), "output/folder")
+if shutil.which("mpirun"):
+    refused("triangles on 2 ranks", override(base, f"subsection mesh\n set file = {MESHES}column_2d_triangles.geo\nend"),
+            "mesh/file", results, ranks=2, contains="Recombine")
+# no shell: a mesh path and an output folder holding $(...), quotes and ; run as names
+pwned = os.path.join("/tmp", f"wetbed_pwned_{os.getpid()}")
+shell_dir = os.path.join(work, f"shell $(touch {pwned}) `touch {pwned}` \"; touch {pwned}; '")
+shutil.rmtree(os.path.join(work, "shell $(touch "), ignore_errors=True)
+os.makedirs(shell_dir, exist_ok=True)
+geo = os.path.join(shell_dir, "column $(touch x).geo")
+shutil.copy(os.path.join(source, "meshes", "column_2d.geo"), geo)
+code, _, err = run(case_into(os.path.join(shell_dir, "out $(touch y)"), f"subsection mesh\n set file = {geo}\nend"), "shell")
+check("no shell: $(...) in the mesh and folder names", code == 0 and not os.path.exists(pwned)
+      and not os.path.exists(os.path.join(work, "x")) and os.path.isfile(os.path.join(shell_dir, "out $(touch y)", "mesh.msh")),
+      f"exit {code} '{last_line(err)}', {pwned} exists: {os.path.exists(pwned)}")
+shutil.rmtree(os.path.join(work, "shell $(touch "), ignore_errors=True)
+# the spectrum CLI: every option range-checked, non-finite samples refused naming the file
+series = os.path.join(work, "series.csv")
+with open(series, "w") as f:
+    f.write("time,pressure_drop\n" + "".join(f"{i * 0.01},{math.sin(i)}\n" for i in range(64)))
+p = subprocess.run([wetbed, "spectrum", series], capture_output=True, text=True)
+check("spectrum of a clean series", p.returncode == 0, p.stderr)
+for values, name in ((("nan", 1), "NaN in pressure_drop"), (("inf", 0), "inf in time")):
+    spoilt = os.path.join(work, name.replace(" ", "_") + ".csv")
+    lines = open(series).read().splitlines()
+    row = lines[20].split(",")
+    row[values[1]] = values[0]
+    lines[20] = ",".join(row)
+    open(spoilt, "w").write("\n".join(lines) + "\n")
+    p = subprocess.run([wetbed, "spectrum", spoilt], capture_output=True, text=True)
+    check(f"spectrum: {name}", p.returncode == 2 and spoilt in last_line(p.stderr) and "finite" in last_line(p.stderr),
+          f"exit {p.returncode} '{last_line(p.stderr)}'")
+for args, expected in ((["--segments", "-1"], "--segments"), (["--segments", "5000"], "--segments"),
+                       (["--segments", "2.5"], "--segments"), (["--start", "-1"], "--start"),
+                       (["--start", "nan"], "--start"), (["--start", "inf"], "--start"),
+                       (["--columns", ","], "--columns"), (["--segments"], "--segments")):
+    p = subprocess.run([wetbed, "spectrum", series] + args, capture_output=True, text=True)
+    check(f"spectrum {' '.join(args)}", p.returncode == 2 and expected in last_line(p.stderr)
+          and len(p.stderr.strip().splitlines()) == 1, f"exit {p.returncode} '{p.stderr.strip()}'")
+
 n = len(cases)
-print(f"{n} bad-input cases checked")
+print(f"{n} bad-input cases and {len(checks)} folder, shell and spectrum checks")
 for f in failures:
     print("FAILED:", f)
-print(f"{n + 14 - len(failures)} passed, {len(failures)} failed")
+print(f"{n + 14 + len(checks) - len(failures)} passed, {len(failures)} failed")
 sys.exit(1 if failures else 0)

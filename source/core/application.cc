@@ -1,6 +1,8 @@
 #include <wetbed/core/application.h>
 #include <wetbed/core/input_error.h>
+#include <wetbed/core/output_folder.h>
 #include <wetbed/core/parameters.h>
+#include <wetbed/mesh/mesh_input.h>
 #include <wetbed/postprocess/closure_table.h>
 #include <wetbed/postprocess/spectrum.h>
 #include <wetbed/solvers/two_fluid_solver.h>
@@ -8,6 +10,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 
@@ -21,6 +24,8 @@ void print_usage (std::ostream &out)
          "usage:\n"
          "  wetbed CASE.prm                run the case (mpirun -np N wetbed CASE.prm)\n"
          "  wetbed CASE.prm --resume       continue it from <output folder>/checkpoint\n"
+         "  wetbed CASE.prm --overwrite    replace a previous run's results in the "
+         "output folder\n"
          "  wetbed CASE.prm --threads N    N threads per rank for the flow assembly "
          "(default 1)\n"
          "  wetbed --print-parameters      every parameter with default and "
@@ -42,6 +47,24 @@ void print_usage (std::ostream &out)
          "4 stopped by SIGTERM/SIGINT after writing a checkpoint.\n";
 }
 
+/** The text of an exception on one line (deal.II's messages span several). */
+std::string one_line (const std::string &text)
+{
+  std::string line;
+  bool        blank = false;
+  for (const char c : text)
+    if (c == '\n' || c == '\r' || c == '\t' || c == ' ')
+      blank = !line.empty ();
+    else
+    {
+      if (blank)
+        line += ' ';
+      line += c;
+      blank = false;
+    }
+  return line;
+}
+
 /** `wetbed spectrum MONITORS.csv [--start T] [--segments K] [--columns A,B]`. */
 int spectrum_command (const std::vector<std::string> &arguments)
 {
@@ -51,27 +74,59 @@ int spectrum_command (const std::vector<std::string> &arguments)
   for (std::size_t i = 1; i < arguments.size (); i += 2)
   {
     const std::string &option = arguments[i];
+    if (option != "--start" && option != "--segments" && option != "--columns")
+      throw InputError ("spectrum " + option,
+                        "unknown option (--start, --segments, --columns)");
     if (i + 1 >= arguments.size ())
       throw InputError ("spectrum " + option, "needs a value");
     const std::string &value = arguments[i + 1];
-    try
+    std::size_t        used  = 0;
+    if (option == "--start")
     {
-      if (option == "--start")
-        start = std::stod (value);
-      else if (option == "--segments")
-        segments = std::stoul (value);
-      else if (option == "--columns")
-        columns = dealii::Utilities::split_string_list (value);
-      else
-        throw InputError ("spectrum " + option,
-                          "unknown option (--start, --segments, --columns)");
+      try
+      {
+        start = std::stod (value, &used);
+      }
+      catch (const std::logic_error &)
+      {
+        used = 0;
+      }
+      require (used == value.size () && used > 0,
+               "spectrum --start",
+               "'" + value + "' is not a number");
+      require (std::isfinite (start) && start >= 0,
+               "spectrum --start",
+               "'" + value + "' is not a finite time >= 0 (s)");
     }
-    catch (const std::logic_error &)
+    else if (option == "--segments")
     {
-      throw InputError ("spectrum " + option, "'" + value + "' is not a number");
+      long n = 0;
+      try
+      {
+        n = std::stol (value, &used);
+      }
+      catch (const std::logic_error &)
+      {
+        used = 0;
+      }
+      require (used == value.size () && used > 0,
+               "spectrum --segments",
+               "'" + value + "' is not a number");
+      require (n >= 1 && n <= 1024,
+               "spectrum --segments",
+               "'" + value + "' is not a segment count in [1, 1024]");
+      segments = static_cast<unsigned int> (n);
+    }
+    else
+    {
+      columns = dealii::Utilities::split_string_list (value);
+      require (!columns.empty (), "spectrum --columns", "names no column");
+      for (const auto &name : columns)
+        require (!name.empty (),
+                 "spectrum --columns",
+                 "has an empty column name in '" + value + "'");
     }
   }
-  require (segments >= 1, "spectrum --segments", "must be >= 1");
   try
   {
     write_monitor_spectra (arguments[0], columns, start, segments, std::cout);
@@ -83,18 +138,72 @@ int spectrum_command (const std::vector<std::string> &arguments)
   return 0;
 }
 
-/** Runs the case; returns the exit status (0 finished, 4 stopped by a signal). */
+/**
+ * Runs the case; returns the exit status (0 finished, 4 stopped by a signal). Nothing
+ * is created before the parameters and the mesh file have been checked; the output
+ * folder is then locked for the whole run; a run refused on its input or mesh removes
+ * what it created and changes nothing that was there.
+ */
 template <int dim>
 int run_case (const Parameters &parameters, const dealii::ParameterHandler &prm)
 {
+  const bool resume = parameters.checkpoint.resume;
+  if (!resume)
+    check_mesh_file (parameters.mesh, parameters.parameter_file_directory);
+  OutputFolderLock folder (
+      parameters.output.folder, resume, parameters.output.overwrite, MPI_COMM_WORLD);
+  DeferredMeshCommit  mesh; // mesh.msh only once the whole case is accepted
   TwoFluidSolver<dim> solver (parameters, MPI_COMM_WORLD);
-  solver.initialize ();
+  try
+  {
+    solver.initialize ();
+  }
+  catch (const InputError &)
+  {
+    mesh.discard ();
+    folder.undo_creation ();
+    throw;
+  }
+  catch (const std::exception &e)
+  {
+    mesh.discard ();
+    folder.undo_creation ();
+    // whatever stops a resume before the run continues is a problem of the checkpoint
+    // (the input), not a failed run
+    if (resume)
+    {
+      std::string reason = one_line (e.what ());
+      if (reason.rfind ("checkpoint/resume: ", 0) == 0)
+        reason = reason.substr (19);
+      throw InputError ("checkpoint/resume",
+                        "cannot resume from '" + parameters.output.folder +
+                            "/checkpoint': " + reason);
+    }
+    throw;
+  }
+  mesh.commit ();
+  folder.remove_previous_results ();
   if (dealii::Utilities::MPI::this_mpi_process (MPI_COMM_WORLD) == 0)
-    prm.print_parameters (parameters.output.folder + (parameters.checkpoint.resume
-                                                          ? "/parameters_resumed.prm"
-                                                          : "/parameters.prm"),
+    prm.print_parameters (parameters.output.folder +
+                              (resume ? "/parameters_resumed.prm" : "/parameters.prm"),
                           dealii::ParameterHandler::PRM);
   return solver.run () == TwoFluidSolver<dim>::RunEnd::finished ? 0 : 4;
+}
+
+/** Takes every `flag` out of the arguments; whether there was one. */
+bool take_flag (int &argc, char **argv, const std::string &flag)
+{
+  bool found = false;
+  for (int i = 1; i < argc; ++i)
+    if (argv[i] == flag)
+    {
+      for (int j = i; j + 1 < argc; ++j)
+        argv[j] = argv[j + 1];
+      --argc;
+      --i;
+      found = true;
+    }
+  return found;
 }
 } // namespace
 
@@ -164,7 +273,8 @@ int run_application (int argc, char **argv)
       return 2;
     }
   }
-  const bool resume = argc == 3 && std::string (argv[2]) == "--resume";
+  const bool overwrite = take_flag (argc, argv, "--overwrite");
+  const bool resume    = argc == 3 && std::string (argv[2]) == "--resume";
   if (argc != 2 && !resume)
   {
     if (root)
@@ -192,6 +302,8 @@ int run_application (int argc, char **argv)
     Parameters               parameters = Parameters::read (argument, prm);
     if (resume)
       parameters.checkpoint.resume = true;
+    if (overwrite)
+      parameters.output.overwrite = true;
     return parameters.dimension == 2 ? run_case<2> (parameters, prm)
                                      : run_case<3> (parameters, prm);
   }
@@ -204,7 +316,7 @@ int run_application (int argc, char **argv)
   catch (const std::exception &e)
   {
     if (root)
-      std::cerr << "wetbed: run failed: " << e.what () << std::endl;
+      std::cerr << "wetbed: run failed: " << one_line (e.what ()) << std::endl;
     return 3;
   }
   return 0;

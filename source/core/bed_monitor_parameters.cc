@@ -1,6 +1,8 @@
 #include <wetbed/core/bed_monitor_parameters.h>
 #include <wetbed/core/input_error.h>
 
+#include <cmath>
+
 namespace wetbed
 {
 using dealii::ParameterHandler;
@@ -62,6 +64,9 @@ void BedMonitorParameters::parse_parameters (ParameterHandler  &prm,
         require (used == coordinates[d].size (),
                  "bed monitors/point probes",
                  "'" + coordinates[d] + "' is not a number");
+        require (std::isfinite (p[d]),
+                 "bed monitors/point probes",
+                 "'" + coordinates[d] + "' is not a finite number");
       }
       catch (const std::logic_error &)
       {

@@ -3,10 +3,33 @@
 
 #include <deal.II/base/function_parser.h>
 
+#include <cmath>
+#include <iostream>
+#include <sstream>
+
 namespace wetbed
 {
 using dealii::ParameterHandler;
 using namespace dealii::Patterns;
+
+namespace
+{
+/**
+ * Keeps std::cerr quiet while muparser parses: deal.II prints a parse error as five
+ * lines (message, formula, token, position, code) before throwing, and wetbed reports
+ * it as one line naming the parameter.
+ */
+class QuietStandardError
+{
+public:
+  QuietStandardError () : saved (std::cerr.rdbuf (sink.rdbuf ())) {}
+  ~QuietStandardError () { std::cerr.rdbuf (saved); }
+
+private:
+  std::ostringstream sink;
+  std::streambuf    *saved;
+};
+} // namespace
 
 void BoundaryConditionParameters::declare_parameters (ParameterHandler &prm)
 {
@@ -100,6 +123,7 @@ void BoundaryConditionParameters::parse_parameters (ParameterHandler &prm)
   moving_wall_velocity = parse_vector (prm.get ("moving wall velocity"),
                                        "boundary conditions/moving wall velocity");
   prm.leave_subsection ();
+  QuietStandardError quiet;
   try
   {
     dealii::FunctionParser<3> f (3);
@@ -124,7 +148,7 @@ void BoundaryConditionParameters::parse_parameters (ParameterHandler &prm)
                       "'" + inlet_superficial_velocity +
                           "' is not a valid expression in t");
   }
-  require (nitsche_penalty >= 1.0,
+  require (std::isfinite (nitsche_penalty) && nitsche_penalty >= 1.0,
            "boundary conditions/Nitsche penalty",
            "must be >= 1 (the symmetric form needs a large enough penalty)");
 }
@@ -137,5 +161,25 @@ void BoundaryConditionParameters::check_wall_conditions (
   for (unsigned int k = 0; k < 2; ++k)
     for (const std::string &name : choices[k].names ())
       (void)wall_condition_registry ().at (name) (settings[k]);
+}
+
+void BoundaryConditionParameters::check_time_span (const double end_time) const
+{
+  QuietStandardError        quiet;
+  dealii::FunctionParser<1> f (1);
+  f.initialize ("t", inlet_superficial_velocity, {});
+  const unsigned int samples = 400;
+  for (unsigned int i = 0; i <= samples; ++i)
+  {
+    const double t     = end_time * i / samples;
+    const double value = f.value (dealii::Point<1> (t));
+    if (!std::isfinite (value))
+    {
+      std::ostringstream where;
+      where << "'" << inlet_superficial_velocity << "' is " << value << " at t = " << t
+            << " s (it must be finite over [0, time stepping/end time])";
+      throw InputError ("boundary conditions/inlet superficial velocity", where.str ());
+    }
+  }
 }
 } // namespace wetbed

@@ -2,6 +2,8 @@
 
 #include <deal.II/base/utilities.h>
 
+#include <cmath>
+
 namespace wetbed
 {
 dealii::Tensor<1, 3> parse_vector (const std::string &text, const std::string &where)
@@ -25,6 +27,8 @@ dealii::Tensor<1, 3> parse_vector (const std::string &text, const std::string &w
     require (used == parts[d].size () && used > 0,
              where,
              "'" + parts[d] + "' is not a number");
+    require (
+        std::isfinite (vector[d]), where, "'" + parts[d] + "' is not a finite number");
   }
   return vector;
 }

@@ -6,6 +6,10 @@
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/utilities.h>
 
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -328,8 +332,22 @@ void LinearSolverParameters::parse_parameters (ParameterHandler &prm)
 void OutputParameters::declare_parameters (ParameterHandler &prm)
 {
   prm.enter_subsection ("output");
-  prm.declare_entry (
-      "folder", "output", Anything (), "Output folder (created if missing).");
+  prm.declare_entry ("folder",
+                     "output",
+                     Anything (),
+                     "Output folder (created if missing, once the input has been "
+                     "checked). A run holds an exclusive lock on it (the file "
+                     ".wetbed.lock) until it ends: a second run into the same folder "
+                     "exits with status 2.");
+  prm.declare_entry ("overwrite",
+                     "false",
+                     Bool (),
+                     "A new run (not checkpoint/resume) into a folder that holds a "
+                     "previous run's results (monitors.csv or checkpoint/) exits with "
+                     "status 2 unless this is true (or the command line has "
+                     "--overwrite); the previous run's files are then replaced and its "
+                     "checkpoint removed once the new run's input and mesh are "
+                     "accepted.");
   prm.declare_entry ("field interval",
                      "0.05",
                      Double (0),
@@ -363,6 +381,7 @@ void OutputParameters::parse_parameters (ParameterHandler &prm)
 {
   prm.enter_subsection ("output");
   folder            = prm.get ("folder");
+  overwrite         = prm.get_bool ("overwrite");
   field_interval    = prm.get_double ("field interval");
   monitor_interval  = prm.get_integer ("monitor interval");
   progress_interval = prm.get_integer ("progress interval");
@@ -453,7 +472,97 @@ void Parameters::parse_parameters (ParameterHandler &prm)
   bubble_analysis.parse_parameters (prm);
   spectrum.parse_parameters (prm);
   bed_monitors.parse_parameters (prm, dimension);
+  boundary.check_time_span (time.end_time);
+  collect_domain_checks ();
 }
+
+void Parameters::collect_domain_checks ()
+{
+  DomainChecks &checks = mesh.checks;
+  checks               = DomainChecks ();
+  checks.heights.push_back ({"initial conditions/bed height", initial.bed_height, true});
+  for (const double h : output.probe_heights)
+    checks.heights.push_back ({"output/probe heights", h, false});
+  for (const double h : bed_monitors.pressure_drop_planes)
+    checks.heights.push_back ({"bed monitors/pressure drop between", h, false});
+  checks.point_probes = bed_monitors.point_probes;
+  checks.held_solids_velocity =
+      boundary.hold_solids ? boundary.held_solids_velocity : std::string ();
+  checks.end_time = time.end_time;
+  checks.refinement_levels.emplace_back ("mesh/initial refinement",
+                                         mesh.initial_refinement);
+  if (adaptive_refinement.enabled)
+  {
+    checks.refinement_levels.emplace_back ("adaptive refinement/minimum level",
+                                           adaptive_refinement.minimum_level);
+    checks.refinement_levels.emplace_back ("adaptive refinement/maximum level",
+                                           adaptive_refinement.maximum_level);
+  }
+}
+
+namespace
+{
+/**
+ * Every number in the file finite: each value's items (split at commas, semicolons,
+ * colons and blanks) that read as a number must be finite; `inf`, `nan` or `1e999`
+ * anywhere numeric is an InputError naming the parameter. Names (files, physical
+ * groups, the folder) are not numbers and are skipped.
+ */
+void check_finite_values (const ParameterHandler &prm)
+{
+  std::ostringstream text;
+  prm.print_parameters (text, ParameterHandler::ShortPRM);
+  std::istringstream             lines (text.str ());
+  std::vector<std::string>       path;
+  std::string                    line;
+  const std::vector<std::string> names = {"mesh/file",
+                                          "mesh/inlet",
+                                          "mesh/outlet",
+                                          "mesh/wall",
+                                          "mesh/periodic boundaries",
+                                          "boundary conditions/moving wall",
+                                          "output/folder"};
+  while (std::getline (lines, line))
+  {
+    const std::string trimmed = dealii::Utilities::trim (line);
+    if (trimmed.rfind ("subsection ", 0) == 0)
+      path.push_back (dealii::Utilities::trim (trimmed.substr (11)));
+    else if (trimmed == "end" && !path.empty ())
+      path.pop_back ();
+    else if (trimmed.rfind ("set ", 0) == 0 && trimmed.find ('=') != std::string::npos)
+    {
+      const auto  equals = trimmed.find ('=');
+      std::string where;
+      for (const auto &p : path)
+        where += p + "/";
+      where += dealii::Utilities::trim (trimmed.substr (4, equals - 4));
+      if (std::find (names.begin (), names.end (), where) != names.end ())
+        continue;
+      const std::string value = trimmed.substr (equals + 1);
+      std::string       item;
+      for (std::size_t i = 0; i <= value.size (); ++i)
+      {
+        const char c = i < value.size () ? value[i] : ' ';
+        if (c == ',' || c == ';' || c == ':' ||
+            std::isspace (static_cast<unsigned char> (c)))
+        {
+          if (!item.empty ())
+          {
+            char        *end    = nullptr;
+            const double number = std::strtod (item.c_str (), &end);
+            require (end == nullptr || *end != '\0' || std::isfinite (number),
+                     where,
+                     "'" + item + "' is not a finite number");
+          }
+          item.clear ();
+        }
+        else
+          item += c;
+      }
+    }
+  }
+}
+} // namespace
 
 unsigned int Parameters::read_dimension (const std::string &filename)
 {
@@ -483,6 +592,7 @@ Parameters Parameters::read (const std::string &filename, ParameterHandler &prm)
         c = ' ';
     throw InputError (filename, "cannot be parsed:" + text);
   }
+  check_finite_values (prm);
   Parameters parameters;
   parameters.parse_parameters (prm);
   parameters.parameter_file_directory =

@@ -187,6 +187,24 @@ std::vector<double> write_monitor_spectra (const std::string       &monitors_fil
     for (const auto &name : table.names)
       if (name == "pressure_drop" || name.rfind ("alpha_s_plane_", 0) == 0)
         columns.push_back (name);
+  // the used samples finite: a NaN or inf would make every frequency NaN
+  const auto &time = table.column ("time");
+  for (const auto &name : columns)
+  {
+    const auto &values = table.column (name);
+    for (std::size_t i = 0; i < time.size (); ++i)
+      if (!std::isfinite (time[i]) ||
+          (time[i] >= start_time && !std::isfinite (values[i])))
+      {
+        const bool         bad_time = !std::isfinite (time[i]);
+        std::ostringstream value;
+        value << (bad_time ? time[i] : values[i]);
+        throw std::invalid_argument (
+            "'" + monitors_file + "' data row " + std::to_string (i + 1) + ": column '" +
+            (bad_time ? std::string ("time") : name) + "' is " + value.str () +
+            " (not finite; the spectrum needs finite samples)");
+      }
+  }
   std::vector<Spectrum> spectra;
   std::vector<double>   dominant;
   for (const auto &name : columns)

@@ -43,5 +43,7 @@ struct BoundaryConditionParameters
    * cannot be (partial slip without friction, Johnson-Jackson without kinetic theory
    * or for the gas). */
   void check_wall_conditions (bool has_kinetic_theory) const;
+  /** The inlet velocity finite at 400 times over [0, end_time]; InputError if not. */
+  void check_time_span (double end_time) const;
 };
 } // namespace wetbed

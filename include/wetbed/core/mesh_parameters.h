@@ -2,11 +2,35 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace wetbed
 {
+/**
+ * What the rest of a case places in the domain, checked by read_mesh() against the
+ * mesh as soon as it is read (before anything is written): Parameters::parse_parameters
+ * fills it from the other subsections.
+ */
+struct DomainChecks
+{
+  struct Height
+  {
+    std::string parameter; // `subsection/name`
+    double      value;     // m along -gravity from the coordinate origin
+    bool        top_only;  // only not above the top (the bed height may be 0)
+  };
+  std::vector<Height>                heights;      // bed height, probe heights, planes
+  std::vector<std::array<double, 3>> point_probes; // bed monitors/point probes
+  bool        gravity_from_outlet_to_inlet = true; // check gravity against the groups
+  std::string held_solids_velocity; // u_s(x, y, z, t) sampled in the domain; empty: none
+  double      end_time = 0;         // the time span [0, end time] of the samples
+  // uniform refinement levels that every cell reaches, and the parameter that asks
+  std::vector<std::pair<std::string, unsigned int>> refinement_levels;
+};
+
 /** `subsection mesh`: the gmsh geometry and how its physical groups are used. */
 struct MeshParameters
 {
@@ -20,6 +44,7 @@ struct MeshParameters
   bool         cylindrical_wall;   // attach a cylinder manifold (axis = gravity) to walls
   unsigned int mapping_degree;
   double       wall_face_weight; // partition cost of a wall face, relative to a cell's
+  DomainChecks checks;           // filled by Parameters::parse_parameters
 
   static void declare_parameters (dealii::ParameterHandler &prm);
   void        parse_parameters (dealii::ParameterHandler &prm);

@@ -114,6 +114,7 @@ struct LinearSolverParameters
 struct OutputParameters
 {
   std::string         folder;
+  bool                overwrite;      // a new run may replace a previous run's results
   double              field_interval; // simulated seconds between VTU outputs (0: none)
   unsigned int        monitor_interval, progress_interval;
   bool                vtu, hdf5; // field formats: pvtu/vtu pieces, parallel HDF5 + XDMF
@@ -149,6 +150,8 @@ struct Parameters
 
   static void declare_parameters (dealii::ParameterHandler &prm);
   void        parse_parameters (dealii::ParameterHandler &prm);
+  /** Fills mesh.checks: what the other subsections place in the domain. */
+  void collect_domain_checks ();
 
   /** Reads `set dimension` alone (2 or 3) from a .prm file. */
   static unsigned int read_dimension (const std::string &filename);
