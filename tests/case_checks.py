@@ -3,7 +3,7 @@
 
 usage: case_checks.py CHECK WETBED SOURCE_DIR WORK_DIR
 CHECK: ergun | split_inlet | wall_groups | hydrostatic | packed | settling | ramp | kinetic | ranks |
-       monitor_interval | bubbling | hdf5 | restart | amr | failure | bubbles
+       monitor_interval | signals | disk_full | bubbling | hdf5 | restart | amr | failure | bubbles
 """
 import csv
 import math
@@ -40,7 +40,7 @@ def run(case, overrides="", ranks=1, folder=None, resume=False, expected_exit=0)
     # a new run replaces what an earlier ctest run left in its folder (--overwrite); a
     # resumed one continues the checkpoint there
     p = subprocess.run(command + (["--resume"] if resume else ["--overwrite"]), capture_output=True, text=True, env=env)
-    run.stdout = p.stdout
+    run.stdout, run.stderr = p.stdout, p.stderr
     if p.returncode != expected_exit:
         print(p.stdout[-2000:], p.stderr[-2000:])
         expect(False, f"{case} ran (exit {p.returncode})")
@@ -426,6 +426,90 @@ elif check == "restart":
            f"SIGTERM at step {stopped_at}: exit 4 (got {process.returncode}) with a checkpoint")
     rows = run("kinetic_theory_bed", overrides + "end\n", 1, folder, resume=True)
     same_monitors(reference, rows, f"stopped by SIGTERM at step {stopped_at}, resumed", 1e-6)
+elif check == "signals":
+    # signals under mpirun on 2 ranks (what a batch system sends): SIGUSR2 to mpirun
+    # writes a checkpoint and stops, the resumed run gives the uninterrupted monitors;
+    # SIGUSR1 writes a checkpoint and goes on; a wall-clock interval writes them on
+    # the clock (1 rank), the results unchanged
+    import shutil
+    import signal
+    import time as clock
+    overrides = ("subsection time stepping\n set end time = 0.03\nend\n"
+                 "subsection linear solver\n set relative tolerance = 1e-11\nend\n"
+                 "subsection checkpoint\n set at end = false\n set wall time interval = 0\nend\n")
+    reference = run("kinetic_theory_bed", overrides, 2, os.path.join(work, "signals_reference"))
+    mpi_env = env
+
+    def interrupted(name, sig):
+        folder = os.path.join(work, "signals_" + name)
+        shutil.rmtree(folder, ignore_errors=True)
+        prm = os.path.join(work, "signals_" + name + ".prm")
+        text = open(os.path.join(work, "signals_reference.prm")).read()
+        open(prm, "w").write(text.replace(os.path.join(work, "signals_reference"), folder))
+        process = subprocess.Popen(["mpirun", "--oversubscribe", "-np", "2", wetbed, prm],
+                                   stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=mpi_env)
+        monitors = os.path.join(folder, "monitors.csv")
+        while process.poll() is None and (not os.path.isfile(monitors) or len(open(monitors).readlines()) < 13):
+            clock.sleep(0.02)
+        process.send_signal(sig)
+        out, err = process.communicate()
+        return folder, process.returncode, out
+
+    # (SIGINT/SIGTERM to mpirun itself: Open MPI 4.1 terminates the ranks before they
+    # finish their step, with or without odls_base_sigkill_timeout; not a guarantee)
+    for name, sig in (("sigusr2", signal.SIGUSR2),):
+        folder, code, out = interrupted(name, sig)
+        stopped_at = len(read_monitors(folder)) - 1
+        expect(code != 0 and "Stop requested by a signal" in out and os.path.isfile(os.path.join(folder, "checkpoint", "state")),
+               f"{name.upper()} to mpirun at step {stopped_at}: stopped with a checkpoint (exit {code})")
+        rows = run("kinetic_theory_bed", overrides, 2, folder, resume=True)
+        same_monitors(reference, rows, f"stopped by {name.upper()} at step {stopped_at}, resumed on 2 ranks", 1e-5)
+    folder, code, out = interrupted("sigusr1", signal.SIGUSR1)
+    expect(code == 0 and out.count("checkpoint written") == 1 and os.path.isfile(os.path.join(folder, "checkpoint", "state")),
+           f"SIGUSR1 to mpirun: one checkpoint, the run goes on to the end (exit {code})")
+    same_monitors(reference, read_monitors(folder), "SIGUSR1 run vs uninterrupted", 1e-12)
+    # the wall clock: a checkpoint after each step that passes a multiple of 0.3 s
+    rows = run("kinetic_theory_bed", overrides.replace("wall time interval = 0", "wall time interval = 0.3"), 1,
+               os.path.join(work, "signals_clock"))
+    written = run.stdout.count("checkpoint written")
+    expect(written >= 2, f"wall time interval 0.3 s: {written} checkpoints on the clock (>= 2)")
+    one_rank = run("kinetic_theory_bed", overrides, 1, os.path.join(work, "signals_clock_reference"))
+    same_monitors(one_rank, rows, "checkpoints on the clock vs none", 0.0)
+elif check == "disk_full":
+    # a checkpoint that does not fit: status 3 with one line naming output/folder, the
+    # previous checkpoint intact and resumable (the output folder on a small tmpfs: the
+    # first checkpoint fits, the second does not)
+    import shutil
+    overrides = ("subsection time stepping\n set end time = 0.02\nend\n"
+                 "subsection checkpoint\n set at end = false\n set interval = 10\nend\n")
+    reference = run("kinetic_theory_bed", overrides, 1, os.path.join(work, "disk_reference"))
+    saved = os.path.join(work, "disk_reference", "checkpoint")
+    size = sum(os.path.getsize(os.path.join(saved, f)) for f in os.listdir(saved))
+    mount = os.path.join(work, "disk_small")
+    os.makedirs(mount, exist_ok=True)
+    subprocess.run(["umount", mount], capture_output=True)
+    # room for the first (what write_checkpoint asks: 1.1 x the field data + 64 kB) and
+    # for the mesh, monitors and lock, but not for a second beside it
+    fixed = os.path.getsize(os.path.join(saved, "triangulation_fixed.data"))
+    kb = int((1.1 * fixed + 65536 + 0.5 * size + 48 * 1024) / 1024)
+    mounted = subprocess.run(["mount", "-t", "tmpfs", "-o", f"size={kb}k", "tmpfs", mount], capture_output=True)
+    if mounted.returncode != 0:
+        print(f"SKIP no tmpfs mount here ({mounted.stderr.strip()}): the full-disk case needs root")
+    else:
+        try:
+            folder = os.path.join(mount, "run")
+            run("kinetic_theory_bed", overrides, 1, folder, expected_exit=3)
+            message = run.stderr.strip().splitlines()[-1] if run.stderr.strip() else ""
+            expect("output/folder" in message and "no room for a checkpoint" in message and len(run.stderr.strip().splitlines()) == 1,
+                   f"a checkpoint that does not fit ({kb} kB tmpfs, checkpoints of {size // 1024} kB): exit 3, '{message[:160]}'")
+            expect(os.path.isfile(os.path.join(folder, "checkpoint", "state")), "the previous checkpoint is kept")
+            moved = os.path.join(work, "disk_moved")
+            shutil.rmtree(moved, ignore_errors=True)
+            shutil.copytree(folder, moved)
+        finally:
+            subprocess.run(["umount", mount], capture_output=True)
+        rows = run("kinetic_theory_bed", overrides, 1, moved, resume=True)
+        same_monitors(reference, rows, "resumed from the kept checkpoint", 1e-6)
 elif check == "amr":
     # bubble-following AMR adapting at every step (refining and coarsening) on the 2D
     # bubbling bed: solids mass to 1e-12 and bounds at every step; T13: 2 ranks equal 1

@@ -398,6 +398,53 @@ refused("output folder is a file", case_into(a_file), "output/folder")
 if shutil.which("mpirun"):
     refused("triangles on 2 ranks", override(base, f"subsection mesh\n set file = {MESHES}column_2d_triangles.geo\nend"),
             "mesh/file", results, ranks=2, contains="Recombine")
+# checkpoint identity: a resume refuses a checkpoint that is not this case's, naming
+# what differs, and changes nothing; what may change on resume does not stop it
+def resume_of(folder, extra=""):
+    return override(base, f"subsection output\n set folder = {folder}\nend\n"
+                          "subsection checkpoint\n set resume = true\nend\n"
+                          "subsection time stepping\n set end time = 2e-4\nend\n" + extra)
+
+
+for name, extra, contains in (
+        ("another particle density", "subsection physical properties\n set particle density = 2600\nend", "physical properties/particle density"),
+        ("another initial refinement", "subsection mesh\n set initial refinement = 0\nend", "mesh/initial refinement"),
+        ("another drag law", "subsection drag\n set model = Wen-Yu\nend", "drag/model")):
+    folder = copy_of_results("identity")
+    refused(f"resume with {name}", resume_of(folder, extra), "checkpoint/resume", folder, contains=contains)
+folder = copy_of_results("identity")
+state = open(os.path.join(folder, "checkpoint", "state")).read()
+digit = next(i for i in range(len(state) // 2, len(state)) if state[i].isdigit() and state[i] != "9")
+open(os.path.join(folder, "checkpoint", "state"), "w").write(state[:digit] + str(int(state[digit]) + 1) + state[digit + 1:])
+refused("resume from a state with one digit changed", resume_of(folder), "checkpoint/resume", folder, contains="checksum")
+folder = copy_of_results("identity")
+os.remove(os.path.join(folder, "checkpoint", "state.checksum"))
+refused("resume from a state without its checksum", resume_of(folder), "checkpoint/resume", folder, contains="checksum")
+folder = copy_of_results("identity")
+rows = open(os.path.join(folder, "monitors.csv")).read().split("\n")
+rows[1] = rows[1].replace("0", "1", 1)
+open(os.path.join(folder, "monitors.csv"), "w").write("\n".join(rows))
+refused("resume onto another run's monitors.csv", resume_of(folder), "checkpoint/resume", folder, contains="monitors.csv")
+# the mesh file changed under the checkpoint (a copy of the .geo, one more column)
+mesh_copy = os.path.join(work, "identity_mesh.geo")
+shutil.copy(os.path.join(source, "meshes", "column_2d.geo"), mesh_copy)
+mesh_folder = os.path.join(work, "identity_mesh")
+shutil.rmtree(mesh_folder, ignore_errors=True)
+code, _, err = run(case_into(mesh_folder, f"subsection mesh\n set file = {mesh_copy}\nend"), "identity_mesh")
+open(mesh_copy, "w").write(open(mesh_copy).read().replace('nx = {5', 'nx = {6'))
+refused("resume after the mesh file changed", resume_of(mesh_folder, f"subsection mesh\n set file = {mesh_copy}\nend"),
+        "checkpoint/resume", mesh_folder, contains="mesh/file")
+# what may change: the end time and the solver tolerance; rows the run wrote after the
+# checkpoint are its own and are replaced
+folder = copy_of_results("identity")
+lines_before = open(os.path.join(folder, "monitors.csv")).read().count("\n")
+with open(os.path.join(folder, "monitors.csv"), "a") as f:
+    f.write(open(os.path.join(folder, "monitors.csv")).read().split("\n")[-2] + "\n")
+code, _, err = run(resume_of(folder, "subsection time stepping\n set end time = 4e-4\nend\n"
+                                     "subsection linear solver\n set relative tolerance = 1e-9\nend"), "identity_resume")
+lines_after = open(os.path.join(folder, "monitors.csv")).read().count("\n")
+check("resume with a new end time and tolerance continues the run", code == 0 and lines_after > lines_before,
+      f"exit {code} '{last_line(err)}', {lines_before} -> {lines_after} lines")
 # no shell: a mesh path and an output folder holding $(...), quotes and ; run as names
 pwned = os.path.join("/tmp", f"wetbed_pwned_{os.getpid()}")
 shell_dir = os.path.join(work, f"shell $(touch {pwned}) `touch {pwned}` \"; touch {pwned}; '")

@@ -20,12 +20,22 @@ void CheckpointParameters::declare_parameters (ParameterHandler &prm)
                      Bool (),
                      "Write a checkpoint when the run reaches the end time, so that it "
                      "can be continued with a later end time and `resume = true`.");
+  prm.declare_entry ("wall time interval",
+                     "900",
+                     Double (0),
+                     "Wall-clock seconds between checkpoints (after the step that "
+                     "passes each multiple), so that even a hard kill loses at most "
+                     "this much work. 0: none on the clock.");
   prm.declare_entry ("on signal",
                      "true",
                      Bool (),
-                     "On SIGTERM or SIGINT, finish the current time step, write a "
-                     "checkpoint and stop (exit status 4). false: the signal's default "
-                     "action (the run is killed).");
+                     "On SIGTERM, SIGINT or SIGUSR2, finish the current time step, write "
+                     "a checkpoint and stop (exit status 4); on SIGUSR1 write a "
+                     "checkpoint after the current step and go on (Slurm's `--signal`). "
+                     "mpirun forwards SIGUSR1/SIGUSR2 to the ranks as they are; a "
+                     "SIGINT/SIGTERM to mpirun itself terminates the ranks before "
+                     "they can write one (the wall time interval covers that). "
+                     "false: the signals' default action.");
   prm.declare_entry ("resume",
                      "false",
                      Bool (),
@@ -40,10 +50,11 @@ void CheckpointParameters::declare_parameters (ParameterHandler &prm)
 void CheckpointParameters::parse_parameters (ParameterHandler &prm)
 {
   prm.enter_subsection ("checkpoint");
-  interval  = prm.get_integer ("interval");
-  at_end    = prm.get_bool ("at end");
-  on_signal = prm.get_bool ("on signal");
-  resume    = prm.get_bool ("resume");
+  interval           = prm.get_integer ("interval");
+  at_end             = prm.get_bool ("at end");
+  on_signal          = prm.get_bool ("on signal");
+  wall_time_interval = prm.get_double ("wall time interval");
+  resume             = prm.get_bool ("resume");
   prm.leave_subsection ();
 }
 } // namespace wetbed

@@ -508,21 +508,16 @@ namespace
  * anywhere numeric is an InputError naming the parameter. Names (files, physical
  * groups, the folder) are not numbers and are skipped.
  */
-void check_finite_values (const ParameterHandler &prm)
+/** Every `subsection/parameter` of `prm` and its value, in print order. */
+std::vector<std::pair<std::string, std::string>>
+parameter_values (const ParameterHandler &prm)
 {
   std::ostringstream text;
   prm.print_parameters (text, ParameterHandler::ShortPRM);
-  std::istringstream             lines (text.str ());
-  std::vector<std::string>       path;
-  std::string                    line;
-  const std::vector<std::string> names = {"mesh/file",
-                                          "mesh/inlet",
-                                          "mesh/outlet",
-                                          "mesh/wall",
-                                          "mesh/periodic boundaries",
-                                          "boundary conditions/moving wall",
-                                          "output/folder"};
-  while (std::getline (lines, line))
+  std::istringstream                               lines (text.str ());
+  std::vector<std::string>                         path;
+  std::vector<std::pair<std::string, std::string>> values;
+  for (std::string line; std::getline (lines, line);)
   {
     const std::string trimmed = dealii::Utilities::trim (line);
     if (trimmed.rfind ("subsection ", 0) == 0)
@@ -536,29 +531,50 @@ void check_finite_values (const ParameterHandler &prm)
       for (const auto &p : path)
         where += p + "/";
       where += dealii::Utilities::trim (trimmed.substr (4, equals - 4));
-      if (std::find (names.begin (), names.end (), where) != names.end ())
-        continue;
-      const std::string value = trimmed.substr (equals + 1);
-      std::string       item;
-      for (std::size_t i = 0; i <= value.size (); ++i)
+      values.emplace_back (where, dealii::Utilities::trim (trimmed.substr (equals + 1)));
+    }
+  }
+  return values;
+}
+
+/**
+ * Every number in the file finite: each value's items (split at commas, semicolons,
+ * colons and blanks) that read as a number must be finite; `inf`, `nan` or `1e999`
+ * anywhere numeric is an InputError naming the parameter. Names (files, physical
+ * groups, the folder) are not numbers and are skipped.
+ */
+void check_finite_values (const std::vector<std::pair<std::string, std::string>> &values)
+{
+  const std::vector<std::string> names = {"mesh/file",
+                                          "mesh/inlet",
+                                          "mesh/outlet",
+                                          "mesh/wall",
+                                          "mesh/periodic boundaries",
+                                          "boundary conditions/moving wall",
+                                          "output/folder"};
+  for (const auto &[where, value] : values)
+  {
+    if (std::find (names.begin (), names.end (), where) != names.end ())
+      continue;
+    std::string item;
+    for (std::size_t i = 0; i <= value.size (); ++i)
+    {
+      const char c = i < value.size () ? value[i] : ' ';
+      if (c == ',' || c == ';' || c == ':' ||
+          std::isspace (static_cast<unsigned char> (c)))
       {
-        const char c = i < value.size () ? value[i] : ' ';
-        if (c == ',' || c == ';' || c == ':' ||
-            std::isspace (static_cast<unsigned char> (c)))
+        if (!item.empty ())
         {
-          if (!item.empty ())
-          {
-            char        *end    = nullptr;
-            const double number = std::strtod (item.c_str (), &end);
-            require (end == nullptr || *end != '\0' || std::isfinite (number),
-                     where,
-                     "'" + item + "' is not a finite number");
-          }
-          item.clear ();
+          char        *end    = nullptr;
+          const double number = std::strtod (item.c_str (), &end);
+          require (end == nullptr || *end != '\0' || std::isfinite (number),
+                   where,
+                   "'" + item + "' is not a finite number");
         }
-        else
-          item += c;
+        item.clear ();
       }
+      else
+        item += c;
     }
   }
 }
@@ -592,9 +608,11 @@ Parameters Parameters::read (const std::string &filename, ParameterHandler &prm)
         c = ' ';
     throw InputError (filename, "cannot be parsed:" + text);
   }
-  check_finite_values (prm);
+  const auto values = parameter_values (prm);
+  check_finite_values (values);
   Parameters parameters;
   parameters.parse_parameters (prm);
+  parameters.values = values;
   parameters.parameter_file_directory =
       std::filesystem::absolute (filename).parent_path ().string ();
   return parameters;

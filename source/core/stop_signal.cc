@@ -8,11 +8,17 @@ namespace wetbed
 {
 namespace
 {
-volatile std::sig_atomic_t stop_signal_received = 0;
+volatile std::sig_atomic_t stop_signal_received       = 0;
+volatile std::sig_atomic_t checkpoint_signal_received = 0;
 
 extern "C" void record_stop_signal (int)
 {
   stop_signal_received = 1;
+}
+
+extern "C" void record_checkpoint_signal (int)
+{
+  checkpoint_signal_received = 1;
 }
 } // namespace
 
@@ -20,11 +26,19 @@ void catch_stop_signals ()
 {
   std::signal (SIGTERM, record_stop_signal);
   std::signal (SIGINT, record_stop_signal);
+  std::signal (SIGUSR2, record_stop_signal);
+  std::signal (SIGUSR1, record_checkpoint_signal);
 }
 
-bool stop_requested (MPI_Comm communicator)
+SignalRequest signal_request (MPI_Comm communicator)
 {
-  const unsigned int local = stop_signal_received != 0 ? 1 : 0;
-  return dealii::Utilities::MPI::max (local, communicator) != 0;
+  const unsigned int local   = stop_signal_received != 0         ? 2
+                               : checkpoint_signal_received != 0 ? 1
+                                                                 : 0;
+  checkpoint_signal_received = 0;
+  const unsigned int any     = dealii::Utilities::MPI::max (local, communicator);
+  return any == 2   ? SignalRequest::stop
+         : any == 1 ? SignalRequest::checkpoint
+                    : SignalRequest::none;
 }
 } // namespace wetbed

@@ -1,4 +1,5 @@
 #include <wetbed/core/input_error.h>
+#include <wetbed/mesh/mesh_input.h>
 #include <wetbed/postprocess/bed_monitors.h>
 #include <wetbed/solvers/two_fluid_solver.h>
 
@@ -7,11 +8,15 @@
 #include <boost/archive/text_iarchive.hpp>
 #include <boost/archive/text_oarchive.hpp>
 #include <boost/serialization/string.hpp>
+#include <boost/serialization/utility.hpp>
 #include <boost/serialization/vector.hpp>
 
 #include <algorithm>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <sstream>
 
 /*
  * Checkpoint/restart. A checkpoint is the folder <output folder>/checkpoint:
@@ -19,8 +24,16 @@
  *                   parallel SolutionTransfer: u_g, u_s, p' and alpha_s, Theta with
  *                   their two BDF history levels), independent of the rank count;
  *   state           the time-stepping state (t, dt, previous dt, step, rejections),
- *                   the output counters and XDMF index, the initial solids mass and
- *                   the length of monitors.csv at that step.
+ *                   the output counters and XDMF index, the initial solids mass, the
+ *                   length of monitors.csv at that step and a hash of those bytes; the
+ *                   identity of the run: its id, a hash of the mesh file and of the
+ *                   coarse mesh made from it, every parameter, and a hash of each file
+ *                   of the triangulation;
+ *   state.checksum  the hash of `state` itself.
+ * A resume refuses (status 2, naming what differs) a checkpoint whose files do not
+ * match their hashes, whose mesh or parameters differ from the case's (but for those
+ * that may change on resume, resume_may_change), or whose monitors.csv is not the one
+ * its run wrote.
  * It is written into checkpoint.partial and swapped in by renames only once complete,
  * so that a crash during the write never loses the previous checkpoint (at worst it
  * is left as checkpoint.previous, which a resume falls back on).
@@ -31,7 +44,7 @@ using namespace dealii;
 
 namespace
 {
-constexpr unsigned int checkpoint_format = 2;
+constexpr unsigned int checkpoint_format = 3;
 
 /** Everything a resumed run needs besides the mesh and the fields. */
 struct CheckpointState
@@ -48,6 +61,10 @@ struct CheckpointState
   std::string                    bubble_state; // the tracker and the bubble CSV lengths
   // (name, FNV-1a hash of the contents) of every file of the saved triangulation
   std::vector<std::pair<std::string, unsigned long long>> files;
+  // the identity of the run
+  std::string        run_id;
+  unsigned long long mesh_file_hash = 0, coarse_mesh_hash = 0, monitors_hash = 0;
+  std::vector<std::pair<std::string, std::string>> parameters;
 
   template <class Archive>
   void serialize (Archive &archive, const unsigned int)
@@ -55,23 +72,84 @@ struct CheckpointState
     archive &format &dimension &mesh_file &time &time_step &previous_time_step;
     archive &step_number &rejected_steps &next_output_time &output_index;
     archive &initial_solids_mass &monitors_bytes &xdmf_entries &bubble_state &files;
+    archive &run_id &mesh_file_hash &coarse_mesh_hash &monitors_hash         &parameters;
   }
 };
 
-/** 64-bit FNV-1a hash of a file's bytes (detects truncated or damaged checkpoints). */
-unsigned long long file_hash (const std::string &path)
+/** The parameters that may differ on resume: when the run ends, how it steps and
+ * solves, what and how often it writes, and the checkpoints themselves; everything
+ * else defines the discrete problem or the files being continued. */
+bool resume_may_change (const std::string &name)
+{
+  static const std::vector<std::string> names       = {"time stepping/end time",
+                                                       "time stepping/maximum time step",
+                                                       "time stepping/minimum time step",
+                                                       "time stepping/cfl target",
+                                                       "time stepping/growth factor",
+                                                       "output/folder",
+                                                       "output/field format",
+                                                       "output/field interval",
+                                                       "output/monitor interval",
+                                                       "output/overwrite",
+                                                       "output/progress interval"};
+  static const std::vector<std::string> subsections = {
+      "checkpoint/", "linear solver/", "spectrum/"};
+  if (std::find (names.begin (), names.end (), name) != names.end ())
+    return true;
+  for (const std::string &s : subsections)
+    if (name.rfind (s, 0) == 0)
+      return true;
+  return false;
+}
+
+constexpr unsigned long long fnv_offset = 1469598103934665603ull;
+
+void fnv_add (unsigned long long &hash, const char *bytes, const std::size_t n)
+{
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    hash ^= static_cast<unsigned char> (bytes[i]);
+    hash *= 1099511628211ull;
+  }
+}
+
+/** A 64-bit FNV-1a hash of a string's bytes. */
+unsigned long long text_hash (const std::string &text)
+{
+  unsigned long long hash = fnv_offset;
+  fnv_add (hash, text.data (), text.size ());
+  return hash;
+}
+
+/** The hash of the vertices of the coarse cells, in their order. */
+template <int dim>
+unsigned long long coarse_mesh_hash (const Triangulation<dim> &triangulation)
+{
+  unsigned long long hash = fnv_offset;
+  for (auto cell = triangulation.begin (0); cell != triangulation.end (0); ++cell)
+    for (const unsigned int v : cell->vertex_indices ())
+      for (unsigned int d = 0; d < dim; ++d)
+      {
+        const double x = cell->vertex (v)[d];
+        fnv_add (hash, reinterpret_cast<const char *> (&x), sizeof x);
+      }
+  return hash;
+}
+
+/** 64-bit FNV-1a hash of a file's first `length` bytes (all by default; detects
+ * truncated or damaged files). */
+unsigned long long
+file_hash (const std::string &path,
+           unsigned long long length = std::numeric_limits<unsigned long long>::max ())
 {
   std::ifstream      in (path, std::ios::binary);
-  unsigned long long hash = 1469598103934665603ull;
+  unsigned long long hash = fnv_offset;
   std::vector<char>  buffer (1 << 16);
-  while (in)
+  while (in && length > 0)
   {
-    in.read (buffer.data (), buffer.size ());
-    for (std::streamsize i = 0; i < in.gcount (); ++i)
-    {
-      hash ^= static_cast<unsigned char> (buffer[i]);
-      hash *= 1099511628211ull;
-    }
+    in.read (buffer.data (), std::min<unsigned long long> (buffer.size (), length));
+    fnv_add (hash, buffer.data (), in.gcount ());
+    length -= in.gcount ();
   }
   return hash;
 }
@@ -85,6 +163,44 @@ std::vector<std::string> triangulation_files (const std::string &folder)
       names.push_back (entry.path ().filename ().string ());
   std::sort (names.begin (), names.end ());
   return names;
+}
+
+/**
+ * The checkpoint is this case's: the same mesh file (its bytes), the same parameters
+ * but for those that may change on resume, and the run's own monitors.csv (its first
+ * monitors_bytes bytes as saved); InputError (status 2) naming what differs.
+ */
+void check_identity (const CheckpointState &state,
+                     const Parameters      &parameters,
+                     const std::string     &folder)
+{
+  const std::string mesh =
+      check_mesh_file (parameters.mesh, parameters.parameter_file_directory);
+  require (file_hash (mesh) == state.mesh_file_hash,
+           "checkpoint/resume",
+           "mesh/file '" + mesh + "' has changed since the checkpoint in '" + folder +
+               "' was written");
+  const std::map<std::string, std::string> saved (state.parameters.begin (),
+                                                  state.parameters.end ());
+  for (const auto &[name, value] : parameters.values)
+  {
+    if (resume_may_change (name))
+      continue;
+    const auto it = saved.find (name);
+    require (it != saved.end () && it->second == value,
+             "checkpoint/resume",
+             name + " = '" + value + "', the checkpoint's run had '" +
+                 (it == saved.end () ? std::string ("no such parameter") : it->second) +
+                 "' (on resume only the end time, time-step limits, output, "
+                 "checkpoint, linear solver and spectrum settings may change)");
+  }
+  const std::string monitors = parameters.output.folder + "/monitors.csv";
+  require (std::filesystem::is_regular_file (monitors) &&
+               std::filesystem::file_size (monitors) >= state.monitors_bytes &&
+               file_hash (monitors, state.monitors_bytes) == state.monitors_hash,
+           "checkpoint/resume",
+           "'" + monitors + "' is not the one the checkpoint's run wrote (run " +
+               state.run_id + "); resuming would cut or rewrite it");
 }
 
 std::string checkpoint_folder (const std::string &output_folder, const char *which = "")
@@ -101,6 +217,31 @@ void TwoFluidSolver<dim>::write_checkpoint ()
   const std::string  target   = checkpoint_folder (parameters.output.folder);
   const std::string  partial  = checkpoint_folder (parameters.output.folder, ".partial");
   const std::string  previous = checkpoint_folder (parameters.output.folder, ".previous");
+  // room for the new one beside the last (p4est aborts the run on a full disk): the
+  // cell-wise field data SolutionTransfer writes (3 flow and 6 scalar vectors), 10%
+  // more and 64 kB for the forest and the state; refused on every rank together
+  // (status 3), the previous checkpoint kept
+  const double needed =
+      1.1 * 8.0 * triangulation.n_global_active_cells () *
+          (3.0 * flow_fe.n_dofs_per_cell () + 6.0 * alpha_fe.n_dofs_per_cell ()) +
+      65536.0;
+  double available = 0;
+  if (root)
+  {
+    std::error_code error;
+    available = static_cast<double> (
+        std::filesystem::space (parameters.output.folder, error).available);
+    if (error)
+      available = 0;
+  }
+  available = Utilities::MPI::broadcast (communicator, available, 0);
+  if (available < needed)
+    throw std::runtime_error ("output/folder: no room for a checkpoint in '" +
+                              parameters.output.folder +
+                              "' at t = " + std::to_string (time) + " (needs ~" +
+                              std::to_string (needed / 1048576.0) + " MB, " +
+                              std::to_string (available / 1048576.0) +
+                              " MB free); the previous checkpoint is kept");
   if (root)
   {
     std::filesystem::remove_all (partial);
@@ -137,17 +278,31 @@ void TwoFluidSolver<dim>::write_checkpoint ()
   state.monitors_bytes      = monitors.bytes_written ();
   state.xdmf_entries        = xdmf_entries;
   state.bubble_state        = bubble_analysis->saved_state ();
+  state.run_id              = run_id;
+  state.mesh_file_hash =
+      file_hash (check_mesh_file (parameters.mesh, parameters.parameter_file_directory));
+  state.coarse_mesh_hash = coarse_mesh_hash<dim> (triangulation);
+  state.parameters       = parameters.values;
   MPI_Barrier (communicator);
   if (root)
   {
+    state.monitors_hash =
+        file_hash (parameters.output.folder + "/monitors.csv", state.monitors_bytes);
     for (const std::string &name : triangulation_files (partial))
       state.files.emplace_back (name, file_hash (partial + "/" + name));
     {
-      std::ofstream                 out (partial + "/state");
-      boost::archive::text_oarchive archive (out);
-      archive << state;
+      std::ostringstream text;
+      {
+        boost::archive::text_oarchive archive (text);
+        archive << state;
+      }
+      std::ofstream out (partial + "/state");
+      out << text.str ();
+      std::ofstream sum (partial + "/state.checksum");
+      sum << text_hash (text.str ()) << "\n";
       out.flush ();
-      if (!out)
+      sum.flush ();
+      if (!out || !sum)
         throw std::runtime_error ("could not write the checkpoint state in " + partial);
     }
     // swap: the old checkpoint is removed only once the new one is in place
@@ -180,9 +335,21 @@ void TwoFluidSolver<dim>::resume_from_checkpoint ()
   CheckpointState state;
   try
   {
-    std::ifstream                 in (folder + "/state");
-    boost::archive::text_iarchive archive (in);
+    std::ifstream      in (folder + "/state");
+    std::ostringstream text;
+    text << in.rdbuf ();
+    unsigned long long saved_sum = 0;
+    std::ifstream (folder + "/state.checksum") >> saved_sum;
+    require (saved_sum == text_hash (text.str ()),
+             "checkpoint/resume",
+             "'" + folder + "/state' is damaged or was edited (its checksum differs)");
+    std::istringstream            saved (text.str ());
+    boost::archive::text_iarchive archive (saved);
     archive >> state;
+  }
+  catch (const InputError &)
+  {
+    throw;
   }
   catch (const std::exception &)
   {
@@ -201,6 +368,7 @@ void TwoFluidSolver<dim>::resume_from_checkpoint ()
            "'" + folder + "' was written with mesh/file = " + state.mesh_file +
                ", the case has " + parameters.mesh.file);
 
+  check_identity (state, parameters, folder);
   for (const auto &[name, hash] : state.files)
     require (std::filesystem::is_regular_file (folder + "/" + name) &&
                  file_hash (folder + "/" + name) == hash,
@@ -219,6 +387,9 @@ void TwoFluidSolver<dim>::resume_from_checkpoint ()
                                output,
                                parameters.physical.gravity,
                                triangulation);
+  require (coarse_mesh_hash<dim> (triangulation) == state.coarse_mesh_hash,
+           "checkpoint/resume",
+           "the mesh made from mesh/file differs from the one of the checkpoint's run");
   make_wall_conditions ();
   make_bubble_analysis ();
   try
@@ -251,6 +422,7 @@ void TwoFluidSolver<dim>::resume_from_checkpoint ()
   output_index        = state.output_index;
   initial_solids_mass = state.initial_solids_mass;
   xdmf_entries        = state.xdmf_entries;
+  run_id              = state.run_id;
   make_flow_constraints (time);
 
   monitors.reopen (output + "/monitors.csv",
@@ -260,8 +432,8 @@ void TwoFluidSolver<dim>::resume_from_checkpoint ()
   monitors.restore (evaluate_monitors (this->state ()));
   bubble_analysis->restore_state (state.bubble_state, output);
   resumed = true;
-  pcout << "Resumed from " << folder << " at t = " << time << " (step " << step_number
-        << ")" << std::endl;
+  pcout << "Resumed run " << run_id << " from " << folder << " at t = " << time
+        << " (step " << step_number << ")" << std::endl;
 }
 
 template void TwoFluidSolver<2>::write_checkpoint ();

@@ -22,6 +22,8 @@
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
+#include <random>
+#include <sstream>
 
 namespace wetbed
 {
@@ -106,6 +108,13 @@ void TwoFluidSolver<dim>::initialize ()
     resume_from_checkpoint ();
   else
   {
+    // the run's identity (its checkpoints carry it): 16 hex digits, rank 0's
+    std::ostringstream id;
+    std::random_device random;
+    id << std::hex << std::setw (16) << std::setfill ('0')
+       << ((static_cast<unsigned long long> (random ()) << 32) ^ random ());
+    run_id = Utilities::MPI::broadcast (communicator, id.str (), 0);
+    pcout << "Run " << run_id << std::endl;
     boundaries = read_mesh<dim> (parameters.mesh,
                                  parameters.boundary.moving_wall_name,
                                  parameters.parameter_file_directory,
@@ -522,10 +531,11 @@ typename TwoFluidSolver<dim>::RunEnd TwoFluidSolver<dim>::run ()
 {
   if (!initialized)
     initialize ();
-  const auto        &ts         = parameters.time;
-  const auto         start      = std::chrono::steady_clock::now ();
-  const double       start_time = time; // not 0 for a resumed run
-  const unsigned int first_step = step_number;
+  const auto        &ts                   = parameters.time;
+  const auto         start                = std::chrono::steady_clock::now ();
+  const double       start_time           = time; // not 0 for a resumed run
+  const unsigned int first_step           = step_number;
+  double             next_wall_checkpoint = 1; // multiples of the wall time interval
   if (!resumed)
   {
     record_monitors ();
@@ -544,14 +554,26 @@ typename TwoFluidSolver<dim>::RunEnd TwoFluidSolver<dim>::run ()
       time_step = next_time_step (previous_time_step); // the CFL of the new mesh
     }
     analyse_bubbles ();
-    if (checkpoint.interval > 0 && step_number % checkpoint.interval == 0)
+    // a checkpoint on the step count, the wall clock (rank 0's, for all) or SIGUSR1;
+    // SIGTERM/SIGINT/SIGUSR2 write one and stop
+    const SignalRequest request =
+        checkpoint.on_signal ? signal_request (communicator) : SignalRequest::none;
+    const double wall = Utilities::MPI::broadcast (
+        communicator,
+        std::chrono::duration<double> (std::chrono::steady_clock::now () - start)
+            .count (),
+        0);
+    const bool on_clock = checkpoint.wall_time_interval > 0 &&
+                          wall >= next_wall_checkpoint * checkpoint.wall_time_interval;
+    if (on_clock)
+      next_wall_checkpoint = std::floor (wall / checkpoint.wall_time_interval) + 1;
+    if ((checkpoint.interval > 0 && step_number % checkpoint.interval == 0) || on_clock ||
+        request != SignalRequest::none)
       write_checkpoint ();
-    if (checkpoint.on_signal && stop_requested (communicator))
+    if (request == SignalRequest::stop)
     {
       pcout << "Stop requested by a signal at t = " << time << " (step " << step_number
             << ")" << std::endl;
-      if (checkpoint.interval == 0 || step_number % checkpoint.interval != 0)
-        write_checkpoint ();
       return RunEnd::stopped_by_signal;
     }
     if (parameters.output.field_interval > 0 && time >= next_output_time - 1e-12)

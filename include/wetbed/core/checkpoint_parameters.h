@@ -8,10 +8,12 @@ namespace wetbed
  * from the last saved state (`<output folder>/checkpoint`). */
 struct CheckpointParameters
 {
-  unsigned int interval;  // accepted steps between checkpoints (0: none on a schedule)
-  bool         at_end;    // also at the end time (a finished run can be extended)
-  bool         on_signal; // SIGTERM/SIGINT: save after the current step, then stop
-  bool         resume;    // continue from the checkpoint instead of the initial state
+  unsigned int interval;     // accepted steps between checkpoints (0: none on a schedule)
+  bool         at_end;       // also at the end time (a finished run can be extended)
+  bool         on_signal;    // SIGTERM/SIGINT/SIGUSR2: save after the step, then stop;
+                             // SIGUSR1: save after the step and go on
+  double wall_time_interval; // wall-clock seconds between checkpoints (0: none)
+  bool   resume;             // continue from the checkpoint instead of the initial state
 
   static void declare_parameters (dealii::ParameterHandler &prm);
   void        parse_parameters (dealii::ParameterHandler &prm);

@@ -147,6 +147,9 @@ struct Parameters
   bool                         stabilization; // SUPG + outlet backflow terms
   bool        conservative_momentum;          // momentum equations/form = conservative
   std::string parameter_file_directory;
+  // every `subsection/parameter` and its value as read, in the file's order (what a
+  // checkpoint records of the run)
+  std::vector<std::pair<std::string, std::string>> values;
 
   static void declare_parameters (dealii::ParameterHandler &prm);
   void        parse_parameters (dealii::ParameterHandler &prm);

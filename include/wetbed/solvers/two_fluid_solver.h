@@ -318,6 +318,7 @@ private:
   double                                 min_node_spacing;
   bool                                   initialized = false;
   bool         resumed = false;  // the state came from a checkpoint
+  std::string  run_id;           // new for each run, kept by its resumes
   std::string  rejection_reason; // why the last attempted step was rejected
   SolveHistory solve_history;    // the linear solves of the current step
 };
