@@ -86,9 +86,9 @@ void TwoFluidSolver<dim>::setup_dofs ()
         dsp, alpha_owned, communicator, alpha_relevant);
     correction_matrix.reinit (alpha_owned, alpha_owned, dsp, communicator);
     compaction_flux_matrix.reinit (alpha_owned, alpha_owned, dsp, communicator);
-    if (kinetic_theory && !parameters.kinetic_theory.algebraic)
-      granular_energy_matrix.reinit (alpha_owned, alpha_owned, dsp, communicator);
   }
+  if (kinetic_theory)
+    granular_energy.reinit (alpha_dof_handler, alpha_constraints); // PDE: its sparsity
 
   measure_mesh ();
   report_mesh (dofs_per_block);

@@ -46,7 +46,7 @@ SolverState<dim> TwoFluidSolver<dim>::state () const
                           last_krylov_iterations,
                           initial_solids_mass,
                           correction_momentum,
-                          granular_energy_budget};
+                          granular_energy.budget ()};
 }
 
 template <int dim>

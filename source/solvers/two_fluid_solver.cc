@@ -39,6 +39,7 @@ TwoFluidSolver<dim>::TwoFluidSolver (const Parameters &parameters, MPI_Comm comm
       flow_fe (FE_Q<dim> (2), 2 * dim, FE_Q<dim> (1), 1),
       flow_dof_handler (triangulation), alpha_fe (1), alpha_dof_handler (triangulation),
       flow_system (parameters, communicator, pcout, timer),
+      granular_energy (parameters, communicator, timer),
       drag (closures::create_drag_model (parameters.drag_model)),
       solids_stress (closures::create_solids_stress_model (parameters.solids_stress,
                                                            parameters.physical,
@@ -381,6 +382,30 @@ bool TwoFluidSolver<dim>::try_time_step (const double dt, const unsigned int bdf
   make_flow_constraints (time + dt);
   last_krylov_iterations = 0;
   AlphaVector alpha_momentum (alpha);
+  // the granular temperature (PDE or local equilibrium) from the latest alpha_s and u_s;
+  // false (rejection_reason) if its solve failed
+  const auto update_granular_temperature = [&] ()
+  {
+    const GranularEnergyInputs<dim> inputs{mapping,
+                                           alpha_fe,
+                                           alpha_dof_handler,
+                                           flow_fe,
+                                           flow_dof_handler,
+                                           alpha_constraints,
+                                           boundaries,
+                                           wall_conditions,
+                                           moving_wall_velocity (),
+                                           alpha,
+                                           flow_solution,
+                                           theta_old,
+                                           theta_old2,
+                                           closure_evaluator,
+                                           *kinetic_theory,
+                                           manufactured.get (),
+                                           bdf,
+                                           dt};
+    return granular_energy.update (inputs, theta, solve_history, rejection_reason);
+  };
   for (unsigned int k = 0; k < parameters.time.outer_iterations; ++k)
   {
     solve_history.set_outer_iteration (k);
@@ -401,7 +426,7 @@ bool TwoFluidSolver<dim>::try_time_step (const double dt, const unsigned int bdf
       // verification: alpha_s stays the exact field; Theta is solved for where it is
       // manufactured too
       if (kinetic_theory && manufactured->has_granular_temperature () &&
-          !update_granular_temperature (bdf, dt))
+          !update_granular_temperature ())
       {
         return false;
       }
@@ -412,7 +437,7 @@ bool TwoFluidSolver<dim>::try_time_step (const double dt, const unsigned int bdf
       transport_and_correct_solids (alpha_momentum, bdf, dt);
     // 4. granular temperature with the new alpha_s and u_s (PDE or local equilibrium);
     //    it also evolves in a held solids velocity field
-    if (kinetic_theory && !update_granular_temperature (bdf, dt))
+    if (kinetic_theory && !update_granular_temperature ())
     {
       return false;
     }

@@ -16,6 +16,7 @@
 #include <wetbed/postprocess/bubble_analysis.h>
 #include <wetbed/postprocess/monitors.h>
 #include <wetbed/solvers/flow_system.h>
+#include <wetbed/solvers/granular_energy_solver.h>
 #include <wetbed/solvers/solve_history.h>
 #include <wetbed/solvers/solver_state.h>
 #include <wetbed/solvers/time_step_controller.h>
@@ -193,39 +194,6 @@ private:
                                 const BDFCoefficients &bdf,
                                 double                 dt);
 
-  // granular temperature (source/assembly/granular_energy.cc): the PDE, or the local
-  // equilibrium projected onto the nodes; false if the solve failed
-  bool update_granular_temperature (const BDFCoefficients &bdf, double dt);
-  /** FEValues, Gauss-point fields and local system of the Theta assembly. */
-  struct GranularEnergyScratch;
-  /** Algebraic model: the local equilibrium lumped-L2 projected into `solution`. */
-  void
-  project_algebraic_granular_temperature (dealii::TrilinosWrappers::MPI::Vector &solution,
-                                          GranularEnergyBudget &budget) const;
-  /** PDE model: granular_energy_matrix and `rhs` assembled and compressed. */
-  void assemble_granular_energy_system (const BDFCoefficients                 &bdf,
-                                        double                                 dt,
-                                        dealii::TrilinosWrappers::MPI::Vector &rhs,
-                                        GranularEnergyBudget                  &budget);
-  /** PDE model, one cell's volume terms; returns the cell Peclet number. */
-  double assemble_granular_energy_volume_terms (
-      const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
-      GranularEnergyScratch                                        &scratch,
-      const BDFCoefficients                                        &bdf,
-      double                                                        dt,
-      GranularEnergyBudget                                         &budget) const;
-  /** PDE model, one cell's manufactured boundary flux and Johnson-Jackson wall terms. */
-  void assemble_granular_energy_boundary_terms (
-      const typename dealii::DoFHandler<dim>::active_cell_iterator &cell,
-      const typename dealii::DoFHandler<dim>::active_cell_iterator &flow_cell,
-      GranularEnergyScratch                                        &scratch,
-      GranularEnergyBudget                                         &budget) const;
-  /** PDE model: GMRES from the current Theta; false (rejection_reason) if it failed. */
-  bool solve_granular_energy_system (const dealii::TrilinosWrappers::MPI::Vector &rhs,
-                                     dealii::TrilinosWrappers::MPI::Vector &solution);
-  /** Theta = the clamped nodal `solution`; false (rejection_reason) if not finite. */
-  bool set_granular_temperature (const dealii::TrilinosWrappers::MPI::Vector &solution);
-
   // postprocessing: the components in source/postprocess/ read state(); their
   // orchestration (source/solvers/postprocessing.cc)
   /** The optional columns of monitors.csv this case asks for. */
@@ -280,6 +248,8 @@ private:
   dealii::AffineConstraints<double> alpha_constraints;
 
   FlowSystem<dim> flow_system;
+  // the granular temperature update (PDE or algebraic), its matrix and budget
+  GranularEnergySolver<dim> granular_energy;
   // flow solutions (ghosted): current iterate, t_n, t_{n-1}
   BlockVector flow_solution, flow_old, flow_old2;
 
@@ -300,8 +270,6 @@ private:
   TimeStepController           time_step_controller;
   // compaction correction: M_L + dt K diag(P'_j) (solved) and dt K (the edge fluxes)
   dealii::TrilinosWrappers::SparseMatrix correction_matrix, compaction_flux_matrix;
-  dealii::TrilinosWrappers::SparseMatrix granular_energy_matrix; // PDE model only
-  GranularEnergyBudget                   granular_energy_budget; // of the last update
   // vertical mixture momentum the velocity half of the compaction correction added in
   // the last outer iteration (N s, per metre depth in 2D), for the momentum budget
   double correction_momentum = 0;
