@@ -16,6 +16,8 @@ import time
 
 wetbed, source, work = (os.path.abspath(a) for a in sys.argv[1:4])
 os.makedirs(work, exist_ok=True)
+# a folder a bad case must not create (an earlier run of this script may have left it)
+shutil.rmtree(os.path.join(work, "never_run"), ignore_errors=True)
 failures = []
 
 

@@ -77,8 +77,9 @@ struct CheckpointState
 };
 
 /** The parameters that may differ on resume: when the run ends, how it steps and
- * solves, what and how often it writes, and the checkpoints themselves; everything
- * else defines the discrete problem or the files being continued. */
+ * solves, what and how often it writes, how the mesh is partitioned, and the
+ * checkpoints themselves; everything else defines the discrete problem or the files
+ * being continued. */
 bool resume_may_change (const std::string &name)
 {
   static const std::vector<std::string> names       = {"time stepping/end time",
@@ -91,7 +92,8 @@ bool resume_may_change (const std::string &name)
                                                        "output/field interval",
                                                        "output/monitor interval",
                                                        "output/overwrite",
-                                                       "output/progress interval"};
+                                                       "output/progress interval",
+                                                 "mesh/wall face weight"};
   static const std::vector<std::string> subsections = {
       "checkpoint/", "linear solver/", "spectrum/"};
   if (std::find (names.begin (), names.end (), name) != names.end ())
