@@ -93,7 +93,7 @@ bool resume_may_change (const std::string &name)
                                                        "output/monitor interval",
                                                        "output/overwrite",
                                                        "output/progress interval",
-                                                 "mesh/wall face weight"};
+                                                       "mesh/wall face weight"};
   static const std::vector<std::string> subsections = {
       "checkpoint/", "linear solver/", "spectrum/"};
   if (std::find (names.begin (), names.end (), name) != names.end ())
