@@ -3,7 +3,8 @@
 
 usage: case_checks.py CHECK WETBED SOURCE_DIR WORK_DIR
 CHECK: ergun | split_inlet | wall_groups | hydrostatic | packed | settling | ramp | kinetic | ranks |
-       monitor_interval | signals | disk_full | bubbling | hdf5 | restart | amr | failure | bubbles
+       monitor_interval | signals | disk_full | bubbling | hdf5 | restart | amr | failure | bubbles |
+       matrix_free
 """
 import csv
 import math
@@ -510,6 +511,35 @@ elif check == "disk_full":
             subprocess.run(["umount", mount], capture_output=True)
         rows = run("kinetic_theory_bed", overrides, 1, moved, resume=True)
         same_monitors(reference, rows, "resumed from the kept checkpoint", 1e-6)
+elif check == "matrix_free":
+    # linear solver/operator = matrix-free: the same bilinear form as the assembled
+    # matrix (checked on a random vector after every assembly), hence the same run to
+    # solver tolerance: the kinetic-theory bed (Johnson-Jackson walls, Nitsche), also
+    # with the velocity p-multigrid, which the bubbling bed with AMR (hanging nodes) on 2
+    # ranks and two steps of the 3D column (curved wall, MappingQ2) use as well
+    matrix_free = "subsection linear solver\n set operator = matrix-free\n set check operator = true\nend\n"
+    def checked(what, limit=1e-10):
+        found = [float(v) for v in re.findall(r"\|A_mf x - A x\| / \(\|A\| \|x\|\) = (\S+)", run.stdout)]
+        expect(len(found) > 0 and max(found) <= limit,
+               f"{what}: matrix-free = assembled operator on {len(found)} assemblies (largest |A_mf x - A x| / (|A| |x|) {max(found or [1]):.1e} <= {limit:.0e})")
+    short = "subsection time stepping\n set end time = 0.02\nend\n"
+    reference = run("kinetic_theory_bed", short, folder=os.path.join(work, "matrix_free_reference"))
+    rows = run("kinetic_theory_bed", short + matrix_free, folder=os.path.join(work, "matrix_free"))
+    checked("kinetic-theory bed")
+    same_monitors(reference, rows, "matrix-free vs assembled operator", 1e-6)
+    multigrid = matrix_free.replace("end\n", " set velocity preconditioner = p-multigrid\nend\n")
+    rows = run("kinetic_theory_bed", short + multigrid, folder=os.path.join(work, "matrix_free_multigrid"))
+    same_monitors(reference, rows, "p-multigrid vs AMG on the assembled block", 1e-6)
+    amr = ("subsection time stepping\n set end time = 0.01\nend\n"
+           "subsection adaptive refinement\n set enabled = true\n set interval = 1\n"
+           " set minimum level = 0\n set maximum level = 2\nend\n")
+    rows = run("bubbling_bed_2d", amr + multigrid, 2, os.path.join(work, "matrix_free_amr"))
+    checked("bubbling bed, AMR, 2 ranks")
+    expect(max(int(r["active_cells"]) for r in rows) > int(rows[0]["active_cells"]), "the AMR run refined (hanging nodes)")
+    steps3d = ("subsection time stepping\n set end time = 2e-4\nend\n"
+               "subsection spectrum\n set enabled = false\nend\n")
+    run("column_3d", steps3d + multigrid, 2, os.path.join(work, "matrix_free_3d"))
+    checked("3D column")
 elif check == "amr":
     # bubble-following AMR adapting at every step (refining and coarsening) on the 2D
     # bubbling bed: solids mass to 1e-12 and bounds at every step; T13: 2 ranks equal 1

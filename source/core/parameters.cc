@@ -302,6 +302,30 @@ void LinearSolverParameters::declare_parameters (ParameterHandler &prm)
       "solve repeated. Measured on the 3D column: 10 cuts the wall time by "
       "40% against 1 (rebuild every solve); neutral in 2D");
   prm.declare_entry ("verbose", "false", Bool (), "Print every linear solve.");
+  prm.declare_entry ("operator",
+                     "assembled",
+                     Selection ("assembled|matrix-free"),
+                     "How FGMRES applies the flow system: `assembled` (the Trilinos "
+                     "matrix) or `matrix-free` (sum-factorised cell and face integrals "
+                     "of the same bilinear form, doc/theory.md \"Matrix-free flow "
+                     "operator\"). The preconditioner is built from the assembled "
+                     "matrix in both.");
+  prm.declare_entry (
+      "velocity preconditioner",
+      "AMG",
+      Selection ("AMG|p-multigrid"),
+      "The velocity part of the block preconditioner: `AMG` (one ML V-cycle "
+      "on the assembled Q2 velocity block) or `p-multigrid` (needs "
+      "`operator = matrix-free`: Chebyshev with node-block Jacobi on the "
+      "matrix-free Q2 operator and one ML V-cycle on the Q1 velocity "
+      "matrix of the same bilinear form, doc/theory.md \"Velocity "
+      "p-multigrid\").");
+  prm.declare_entry ("check operator",
+                     "false",
+                     Bool (),
+                     "With `operator = matrix-free`: after each assembly, apply both "
+                     "operators to a random vector and print their largest relative "
+                     "difference (a verification, it costs one assembled product).");
   prm.leave_subsection ();
 }
 
@@ -320,7 +344,13 @@ void LinearSolverParameters::parse_parameters (ParameterHandler &prm)
   rebuild_growth        = prm.get_double ("rebuild growth");
   rebuild_interval      = prm.get_integer ("rebuild interval");
   verbose               = prm.get_bool ("verbose");
+  matrix_free           = prm.get ("operator") == "matrix-free";
+  check_operator        = prm.get_bool ("check operator");
+  p_multigrid           = prm.get ("velocity preconditioner") == "p-multigrid";
   prm.leave_subsection ();
+  require (!p_multigrid || matrix_free,
+           "linear solver/velocity preconditioner",
+           "p-multigrid needs 'linear solver/operator = matrix-free'");
   require (relative_tolerance > 0 && relative_tolerance < 1,
            "linear solver/relative tolerance",
            "must lie in (0, 1)");

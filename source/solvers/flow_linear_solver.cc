@@ -14,6 +14,7 @@ FlowLinearSolver::FlowLinearSolver (const LinearSolverParameters &parameters,
 }
 
 unsigned int FlowLinearSolver::solve (const FlowOperator &op,
+                                      const FlowOperator &preconditioner_source,
                                       FlowPreconditioner &preconditioner,
                                       const BlockVector  &rhs,
                                       BlockVector        &solution,
@@ -23,7 +24,7 @@ unsigned int FlowLinearSolver::solve (const FlowOperator &op,
   const auto &ls               = parameters;
   auto        rebuild_velocity = [&] ()
   {
-    preconditioner.update (op, true);
+    preconditioner.update (preconditioner_source, true);
     solves_since_build     = 0;
     iterations_after_build = 0;
     dt_at_build            = dt;
@@ -34,7 +35,7 @@ unsigned int FlowLinearSolver::solve (const FlowOperator &op,
         std::abs (dt / dt_at_build - 1.0) > 0.2)
       rebuild_velocity ();
     else
-      preconditioner.update (op, false);
+      preconditioner.update (preconditioner_source, false);
   }
 
   const double      target        = ls.relative_tolerance * rhs.l2_norm ();

@@ -633,8 +633,21 @@ typename TwoFluidSolver<dim>::RunEnd TwoFluidSolver<dim>::run ()
         << 1e6 * elapsed / std::max (1u, step_number - first_step) /
                triangulation.n_global_active_cells ()
         << " us per cell per step (" << triangulation.n_global_active_cells ()
-        << " cells at the end); velocity AMG builds "
-        << flow_system.block_preconditioner ().velocity_builds << std::endl;
+        << " cells at the end); velocity AMG builds " << flow_system.velocity_builds ()
+        << std::endl;
+  {
+    dealii::Utilities::System::MemoryStats memory;
+    dealii::Utilities::System::get_memory_stats (memory);
+    const auto peak =
+        dealii::Utilities::MPI::min_max_avg (memory.VmHWM / 1024.0, communicator);
+    pcout << "Cost: "
+          << 1e6 * elapsed / std::max (1u, step_number - first_step) /
+                 flow_dof_handler.n_dofs ()
+          << " us per flow DoF per step (" << flow_dof_handler.n_dofs ()
+          << " flow DoFs, operator " << flow_system.krylov_operator ().name ()
+          << "), peak memory " << peak.max << " MB per rank (max), " << peak.sum
+          << " MB in all" << std::endl;
+  }
   timer.print_wall_time_statistics (communicator);
   write_spectra ();
   return RunEnd::finished;

@@ -105,6 +105,9 @@ struct LinearSolverParameters
   double       rebuild_growth; // rebuild the AMG when iterations grow by this factor
   unsigned int rebuild_interval;
   bool         verbose;
+  bool         matrix_free;    // FGMRES applies the matrix-free flow operator
+  bool         check_operator; // compare it with the assembled one after each assembly
+  bool         p_multigrid;    // velocity preconditioner: p-multigrid instead of ML
 
   static void declare_parameters (dealii::ParameterHandler &prm);
   void        parse_parameters (dealii::ParameterHandler &prm);

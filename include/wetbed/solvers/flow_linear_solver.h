@@ -32,11 +32,14 @@ public:
   /** Rebuild everything at the next solve (after a mesh change). */
   void reset () { solves_since_build = std::numeric_limits<unsigned int>::max () / 2; }
 
-  /** Solves A x = rhs; `solution` holds the initial guess on entry (owned layout,
-   * constrained entries zero) and the solution on exit (constraints not distributed).
-   * Returns the iterations, or invalid_unsigned_int when the solve failed with a fresh
-   * preconditioner (the step is then rejected). */
+  /** Solves A x = rhs with `op` as A and the preconditioner updated from
+   * `preconditioner_source` (the operator it is made for: the same, or the assembled
+   * matrix beside a matrix-free A); `solution` holds the initial guess on entry (owned
+   * layout, constrained entries zero) and the solution on exit (constraints not
+   * distributed). Returns the iterations, or invalid_unsigned_int when the solve failed
+   * with a fresh preconditioner (the step is then rejected). */
   unsigned int solve (const FlowOperator &op,
+                      const FlowOperator &preconditioner_source,
                       FlowPreconditioner &preconditioner,
                       const BlockVector  &rhs,
                       BlockVector        &solution,

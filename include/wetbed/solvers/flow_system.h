@@ -6,7 +6,10 @@
 #include <wetbed/solvers/assembled_flow_operator.h>
 #include <wetbed/solvers/block_preconditioner.h>
 #include <wetbed/solvers/flow_linear_solver.h>
+#include <wetbed/solvers/matrix_free_block_preconditioner.h>
+#include <wetbed/solvers/matrix_free_flow_operator.h>
 #include <wetbed/solvers/solve_history.h>
+#include <wetbed/solvers/velocity_multigrid.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
@@ -76,26 +79,46 @@ public:
    * unconstrained cell systems of the last assembly at `solution`; collective. */
   std::array<double, 3> boundary_reactions (const BlockVector &solution) const;
 
+  /** Applies both operators to a random vector and prints their difference. */
+  void check_operator ();
+
   /** The alpha_s and the flow iterate the last assembly linearised about. */
   const AlphaVector &linearisation_alpha () const { return assembled_alpha; }
   const BlockVector &linearisation_flow () const { return assembled_flow; }
 
   const BlockPreconditioner &block_preconditioner () const { return *preconditioner; }
-  const FlowAssembler<dim>  &flow_assembler () const { return *assembler; }
+  /** How often the velocity preconditioner's expensive part was built (the AMG on the
+   * Q2 block, or the p-multigrid's coarse AMG and smoother). */
+  unsigned int velocity_builds () const
+  {
+    return parameters.linear_solver.p_multigrid ? multigrid.builds
+                                                : preconditioner->velocity_builds;
+  }
+  /** The operator FGMRES applies (`linear solver/operator`). */
+  const FlowOperator &krylov_operator () const;
+  /** The largest relative difference between the matrix-free and the assembled
+   * operator found by `linear solver/check operator` (0 without checks). */
+  double operator_check_difference () const { return largest_operator_difference; }
+  const FlowAssembler<dim> &flow_assembler () const { return *assembler; }
 
 private:
-  const Parameters                    &parameters;
-  MPI_Comm                             communicator;
-  dealii::TimerOutput                 &timer;
-  std::vector<dealii::IndexSet>        owned;
-  dealii::Tensor<1, dim>               up;
-  std::unique_ptr<FlowAssembler<dim>>  assembler;
-  AssembledFlowOperator                op; // with the Schur mobility Laplacian
-  BlockVector                          rhs;
-  std::unique_ptr<BlockPreconditioner> preconditioner;
-  FlowLinearSolver                     linear_solver;
-  AlphaVector                          assembled_alpha;
-  BlockVector                          assembled_flow;
+  const Parameters                   &parameters;
+  MPI_Comm                            communicator;
+  dealii::TimerOutput                &timer;
+  dealii::ConditionalOStream         &pcout;
+  std::vector<dealii::IndexSet>       owned;
+  dealii::Tensor<1, dim>              up;
+  std::unique_ptr<FlowAssembler<dim>> assembler;
+  AssembledFlowOperator               op; // with the Schur mobility Laplacian
+  MatrixFreeFlowOperator<dim>         matrix_free_op;
+  VelocityMultigrid<dim>              multigrid;
+  std::unique_ptr<MatrixFreeBlockPreconditioner<dim>> multigrid_preconditioner;
+  double                                              largest_operator_difference = 0;
+  BlockVector                                         rhs;
+  std::unique_ptr<BlockPreconditioner>                preconditioner;
+  FlowLinearSolver                                    linear_solver;
+  AlphaVector                                         assembled_alpha;
+  BlockVector                                         assembled_flow;
   // the velocity DoFs of the inlet, the walls and the outlet, and the weighted
   // unconstrained rows of the cells that hold them in the last assembly
   std::array<dealii::IndexSet, 3> boundary_velocity_dofs;

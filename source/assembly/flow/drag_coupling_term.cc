@@ -27,6 +27,15 @@ void DragCouplingTerm<dim>::cell (const FlowCellScratch<dim> &s,
   }
 }
 
+template <int dim>
+void DragCouplingTerm<dim>::coefficients (const FlowCellScratch<dim> &s,
+                                          const FlowAssemblyState<dim> &,
+                                          const unsigned int          q,
+                                          FlowPointCoefficients<dim> &c) const
+{
+  c.drag += s.closures.coupling_drag[q];
+}
+
 template class DragCouplingTerm<2>;
 template class DragCouplingTerm<3>;
 } // namespace wetbed

@@ -158,6 +158,61 @@ void FlowAssembler<dim>::local_system (const CellIterator           &cell,
 }
 
 template <int dim>
+FlowCellScratch<dim> FlowAssembler<dim>::make_scratch () const
+{
+  const auto &fe = dynamic_cast<const FESystem<dim> &> (flow_dof_handler.get_fe ());
+  return FlowCellScratch<dim> (
+      mapping, fe, alpha_dof_handler.get_fe (), QGauss<dim> (3), QGauss<dim - 1> (3));
+}
+
+template <int dim>
+std::string FlowAssembler<dim>::term_without_coefficients () const
+{
+  for (const auto &term : terms)
+    if (term->has_matrix () && !term->has_coefficients ())
+      return term->name ();
+  return "";
+}
+
+template <int dim>
+void FlowAssembler<dim>::cell_coefficients (
+    const CellIterator                      &cell,
+    const FlowAssemblyState<dim>            &state,
+    FlowCellScratch<dim>                    &scratch,
+    std::vector<FlowPointCoefficients<dim>> &values,
+    std::vector<FaceCoefficients>           &faces) const
+{
+  prepare_cell (cell, state, scratch);
+  const unsigned int n_q = scratch.JxW.size ();
+  values.assign (n_q, FlowPointCoefficients<dim> ());
+  for (unsigned int q = 0; q < n_q; ++q)
+    for (const auto &term : terms)
+      term->coefficients (scratch, state, q, values[q]);
+  faces.resize (cell->n_faces ());
+  for (const unsigned int f : cell->face_indices ())
+  {
+    faces[f].values.clear ();
+    faces[f].points.clear ();
+    if (!cell->face (f)->at_boundary ())
+      continue;
+    const auto id     = cell->face (f)->boundary_id ();
+    bool       needed = false;
+    for (const auto &term : terms)
+      needed = needed || term->acts_on_boundary (id);
+    if (!needed)
+      continue;
+    prepare_face (cell, f, state, scratch);
+    const unsigned int n_fq = scratch.face_values.n_quadrature_points;
+    faces[f].values.assign (n_fq, FlowFacePointCoefficients<dim> ());
+    faces[f].points = scratch.face_values.get_quadrature_points ();
+    for (unsigned int q = 0; q < n_fq; ++q)
+      for (const auto &term : terms)
+        if (term->acts_on_boundary (id))
+          term->face_coefficients (cell, f, scratch, state, q, faces[f].values[q]);
+  }
+}
+
+template <int dim>
 void FlowAssembler<dim>::capture_boundary_rows (
     const FlowCellCopy              &copy,
     const std::vector<unsigned int> &component,

@@ -4,6 +4,34 @@
 namespace wetbed
 {
 template <int dim>
+double InertiaTerm<dim>::mass (const FlowCellScratch<dim> &s,
+                               const unsigned int          q,
+                               const unsigned int          k) const
+{
+  if (!conservative)
+    return s.bdf_mass[k][q];
+  const double density = k == 0 ? material.gas_density : material.particle_density;
+  const double divergence =
+      inertial_flux_divergence<dim> (k,
+                                     s.alpha_s[q],
+                                     s.grad_alpha_s[q],
+                                     s.u[k][q],
+                                     s.grad_u[k][q],
+                                     material.residual_solids_fraction);
+  return s.bdf_mass[k][q] + density * std::max (divergence, 0.0);
+}
+
+template <int dim>
+void InertiaTerm<dim>::coefficients (const FlowCellScratch<dim> &s,
+                                     const FlowAssemblyState<dim> &,
+                                     const unsigned int          q,
+                                     FlowPointCoefficients<dim> &c) const
+{
+  for (unsigned int k = 0; k < 2; ++k)
+    c.mass[k] += mass (s, q, k);
+}
+
+template <int dim>
 void InertiaTerm<dim>::cell (const FlowCellScratch<dim>   &s,
                              const FlowAssemblyState<dim> &state,
                              FlowCellCopy                 &copy) const
@@ -17,8 +45,7 @@ void InertiaTerm<dim>::cell (const FlowCellScratch<dim>   &s,
     const double w = s.JxW[q];
     for (unsigned int k = 0; k < 2; ++k)
     {
-      double                 history[2]      = {s.inertia[k][q], s.inertia[k][q]};
-      double                 continuity_mass = 0;
+      double                 history[2] = {s.inertia[k][q], s.inertia[k][q]};
       dealii::Tensor<1, dim> force;
       if (conservative)
       {
@@ -26,13 +53,12 @@ void InertiaTerm<dim>::cell (const FlowCellScratch<dim>   &s,
         history[1] = inertial_fraction (k, s.alpha_s_old2[q], residual) * density[k];
         const double divergence = inertial_flux_divergence<dim> (
             k, s.alpha_s[q], s.grad_alpha_s[q], s.u[k][q], s.grad_u[k][q], residual);
-        continuity_mass = density[k] * std::max (divergence, 0.0);
-        force           = -density[k] * std::min (divergence, 0.0) * s.u[k][q];
+        force = -density[k] * std::min (divergence, 0.0) * s.u[k][q];
       }
       force -=
           (bdf.a1 * history[0] * s.u_old[k][q] + bdf.a2 * history[1] * s.u_old2[k][q]) /
           dt;
-      const double mass = s.bdf_mass[k][q] + continuity_mass;
+      const double m = mass (s, q, k);
       for (unsigned int d = 0; d < dim; ++d)
       {
         const auto &rows = s.indices.velocity[k * dim + d];
@@ -41,7 +67,7 @@ void InertiaTerm<dim>::cell (const FlowCellScratch<dim>   &s,
           const double phi_a = s.phi[q][a] * w;
           copy.rhs (rows[a]) += force[d] * phi_a;
           for (unsigned int b = 0; b < n_u; ++b)
-            copy.matrix (rows[a], rows[b]) += mass * phi_a * s.phi[q][b];
+            copy.matrix (rows[a], rows[b]) += m * phi_a * s.phi[q][b];
         }
       }
     }

@@ -30,6 +30,19 @@ void OutletBackflowTerm<dim>::face (const typename FlowTerm<dim>::CellIterator &
   }
 }
 
+template <int dim>
+void OutletBackflowTerm<dim>::face_coefficients (
+    const typename FlowTerm<dim>::CellIterator &,
+    unsigned int,
+    const FlowCellScratch<dim> &s,
+    const FlowAssemblyState<dim> &,
+    const unsigned int              q,
+    FlowFacePointCoefficients<dim> &c) const
+{
+  const auto &fv = s.face_values;
+  c.backflow += gas_density * std::max (-(s.face_u[0][q] * fv.normal_vector (q)), 0.0);
+}
+
 template class OutletBackflowTerm<2>;
 template class OutletBackflowTerm<3>;
 } // namespace wetbed

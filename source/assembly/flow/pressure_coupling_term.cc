@@ -33,6 +33,17 @@ void PressureCouplingTerm<dim>::cell (const FlowCellScratch<dim> &s,
     }
 }
 
+template <int dim>
+void PressureCouplingTerm<dim>::coefficients (const FlowCellScratch<dim> &s,
+                                              const FlowAssemblyState<dim> &,
+                                              const unsigned int          q,
+                                              FlowPointCoefficients<dim> &c) const
+{
+  c.pressure_coupling = true;
+  c.alpha_s           = s.fraction[1][q];
+  c.grad_alpha_s      = s.grad_alpha_s[q];
+}
+
 template class PressureCouplingTerm<2>;
 template class PressureCouplingTerm<3>;
 } // namespace wetbed

@@ -34,6 +34,19 @@ void ViscousTerm<dim>::cell (const FlowCellScratch<dim> &s,
   }
 }
 
+template <int dim>
+void ViscousTerm<dim>::coefficients (const FlowCellScratch<dim> &s,
+                                     const FlowAssemblyState<dim> &,
+                                     const unsigned int          q,
+                                     FlowPointCoefficients<dim> &c) const
+{
+  for (unsigned int k = 0; k < 2; ++k)
+  {
+    c.viscosity[k] += s.viscosity[k][q];
+    c.bulk[k] += s.bulk[k][q];
+  }
+}
+
 template class ViscousTerm<2>;
 template class ViscousTerm<3>;
 } // namespace wetbed

@@ -65,6 +65,25 @@ void WallFrictionTerm<dim>::face (const typename FlowTerm<dim>::CellIterator &ce
   }
 }
 
+template <int dim>
+void WallFrictionTerm<dim>::face_coefficients (
+    const typename FlowTerm<dim>::CellIterator &cell,
+    const unsigned int                          face_number,
+    const FlowCellScratch<dim>                 &s,
+    const FlowAssemblyState<dim> &,
+    const unsigned int              q,
+    FlowFacePointCoefficients<dim> &c) const
+{
+  const auto id = cell->face (face_number)->boundary_id ();
+  for (const Phase phase : {Phase::gas, Phase::solids})
+  {
+    const WallCondition &condition = conditions.at (id, phase);
+    if (condition.has_friction ())
+      c.friction[phase == Phase::gas ? 0 : 1] +=
+          condition.friction ({s.face_alpha_s[q], s.face_theta[q]});
+  }
+}
+
 template class WallFrictionTerm<2>;
 template class WallFrictionTerm<3>;
 } // namespace wetbed

@@ -22,6 +22,8 @@ public:
                     const FlowAssemblyState<dim> &state,
                     FlowCellCopy                 &copy) const override;
 
+  bool has_matrix () const override { return false; }
+
 private:
   FlowMaterial<dim> material;
 };

@@ -25,6 +25,18 @@ public:
                     const FlowAssemblyState<dim> &state,
                     FlowCellCopy                 &copy) const override;
 
+  bool has_coefficients () const override { return true; }
+  void coefficients (const FlowCellScratch<dim>   &scratch,
+                     const FlowAssemblyState<dim> &state,
+                     unsigned int                  q,
+                     FlowPointCoefficients<dim>   &coefficients) const override;
+  /** tau_k alpha_k^2 rho_k^2, the streamline-diffusion weight of phase k at point q
+   * (0 without stabilization). */
+  double supg (const FlowCellScratch<dim>   &scratch,
+               const FlowAssemblyState<dim> &state,
+               unsigned int                  q,
+               unsigned int                  k) const;
+
 private:
   bool streamline_diffusion;
 };

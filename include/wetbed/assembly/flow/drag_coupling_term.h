@@ -16,6 +16,12 @@ public:
                     const FlowAssemblyState<dim> &state,
                     FlowCellCopy                 &copy) const override;
 
+  bool has_coefficients () const override { return true; }
+  void coefficients (const FlowCellScratch<dim>   &scratch,
+                     const FlowAssemblyState<dim> &state,
+                     unsigned int                  q,
+                     FlowPointCoefficients<dim>   &coefficients) const override;
+
 private:
   // no data: beta comes from the cell's closures
 };

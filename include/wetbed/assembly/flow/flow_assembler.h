@@ -51,9 +51,30 @@ public:
                  BlockVector                             &rhs,
                  const BoundaryRowCapture                &capture) const;
 
-private:
   using CellIterator = typename dealii::DoFHandler<dim>::active_cell_iterator;
 
+  /** The coefficients of the boundary terms on one boundary face of a cell, with the
+   * points they belong to (empty where no term acts on the face). */
+  struct FaceCoefficients
+  {
+    std::vector<FlowFacePointCoefficients<dim>> values;
+    std::vector<dealii::Point<dim>>             points;
+  };
+
+  /** A scratch for cell_coefficients() (the quadrature of assemble()). */
+  FlowCellScratch<dim> make_scratch () const;
+  /** The name of a term that contributes to the matrix but gives no coefficients (the
+   * matrix-free operator cannot apply it), or an empty string. */
+  std::string term_without_coefficients () const;
+  /** The bilinear form's coefficients at the quadrature points of a (flow DoF handler)
+   * cell and of its boundary faces, from the same fields and closures as assemble(). */
+  void cell_coefficients (const CellIterator                      &cell,
+                          const FlowAssemblyState<dim>            &state,
+                          FlowCellScratch<dim>                    &scratch,
+                          std::vector<FlowPointCoefficients<dim>> &values,
+                          std::vector<FaceCoefficients>           &faces) const;
+
+private:
   /** The fields, the closures and the shared point quantities of a cell. */
   void prepare_cell (const CellIterator           &cell,
                      const FlowAssemblyState<dim> &state,

@@ -24,6 +24,15 @@ public:
                     const FlowAssemblyState<dim> &state,
                     FlowCellCopy                 &copy) const override;
 
+  bool has_coefficients () const override { return true; }
+  void coefficients (const FlowCellScratch<dim>   &scratch,
+                     const FlowAssemblyState<dim> &state,
+                     unsigned int                  q,
+                     FlowPointCoefficients<dim>   &coefficients) const override;
+  /** The mass coefficient of phase k at point q: a0 alpha_k rho_k / dt and, in the
+   * conservative form, rho_k max(div(alpha_k u_k), 0). */
+  double mass (const FlowCellScratch<dim> &scratch, unsigned int q, unsigned int k) const;
+
 private:
   FlowMaterial<dim> material;
   bool              conservative;

@@ -40,6 +40,8 @@ public:
              const FlowAssemblyState<dim>               &state,
              FlowCellCopy                               &copy) const override;
 
+  bool has_matrix () const override { return false; }
+
 private:
   std::shared_ptr<const ManufacturedSolution<dim>> solution;
   std::set<dealii::types::boundary_id>             outlets, walls;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <wetbed/assembly/flow/flow_term.h>
+#include <wetbed/assembly/nitsche_wall.h>
 
 #include <array>
 #include <map>
@@ -36,6 +37,21 @@ public:
              const FlowCellScratch<dim>                 &scratch,
              const FlowAssemblyState<dim>               &state,
              FlowCellCopy                               &copy) const override;
+
+  bool has_coefficients () const override { return true; }
+  void face_coefficients (const typename FlowTerm<dim>::CellIterator &cell,
+                          unsigned int                                face_number,
+                          const FlowCellScratch<dim>                 &scratch,
+                          const FlowAssemblyState<dim>               &state,
+                          unsigned int                                q,
+                          FlowFacePointCoefficients<dim> &coefficients) const override;
+  /** The phases' Nitsche data and the wall's own normal at face point q. */
+  std::array<NitschePhase, 2>
+  phase_data (const typename FlowTerm<dim>::CellIterator &cell,
+              const FlowCellScratch<dim>                 &scratch,
+              const FlowAssemblyState<dim>               &state,
+              unsigned int                                q,
+              dealii::Tensor<1, dim>                     &wall_normal) const;
 
 private:
   // gas, solids slip (weakly) on each wall

@@ -27,6 +27,14 @@ public:
              const FlowAssemblyState<dim>               &state,
              FlowCellCopy                               &copy) const override;
 
+  bool has_coefficients () const override { return true; }
+  void face_coefficients (const typename FlowTerm<dim>::CellIterator &cell,
+                          unsigned int                                face_number,
+                          const FlowCellScratch<dim>                 &scratch,
+                          const FlowAssemblyState<dim>               &state,
+                          unsigned int                                q,
+                          FlowFacePointCoefficients<dim> &coefficients) const override;
+
 private:
   std::set<dealii::types::boundary_id> outlets;
   double                               gas_density;

@@ -21,6 +21,9 @@ public:
                     const FlowAssemblyState<dim> &state,
                     FlowCellCopy                 &copy) const override;
 
+  // L_c, the Schur preconditioner's matrix, not the system's
+  bool has_matrix () const override { return false; }
+
 private:
   FlowMaterial<dim> material;
 };

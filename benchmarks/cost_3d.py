@@ -1,0 +1,97 @@
+#!/usr/bin/env python3
+"""Cost of the 3D column (prm/column_3d.prm) with each flow-solve path, side by side in
+one run on the same cores: `assembled` (the Trilinos matrix, ML on the Q2 velocity
+block), `matrix-free` operator with the same ML preconditioner, and `matrix-free` with
+the velocity p-multigrid. For each refinement and path: wall time per simulated second
+over the same simulated span, us per flow DoF per step, FGMRES iterations per solve,
+peak memory per rank, the timer split, and the ratio to the assembled path. Regenerates
+the 'cost_3d' section of doc/benchmarks.md.
+
+usage: python3 benchmarks/cost_3d.py [--end-time 5e-4] [--ranks 2] [--levels 0 1]
+       [--paths assembled matrix-free p-multigrid] [--end-time-level-1 T]
+(build first: bash scripts/build.sh)
+"""
+import argparse
+import csv
+import json
+import os
+import re
+import subprocess
+
+from benchmark_setup import read_case, replace_doc_section, repository_root, write_case
+
+root = repository_root()
+parser = argparse.ArgumentParser()
+parser.add_argument("--end-time", type=float, default=5e-4, help="simulated span (s) at refinement 0")
+parser.add_argument("--end-time-level-1", type=float, default=None, help="span at refinement 1 (default: --end-time)")
+parser.add_argument("--ranks", type=int, default=2)
+parser.add_argument("--levels", type=int, nargs="+", default=[0, 1])
+parser.add_argument("--paths", nargs="+", default=["assembled", "matrix-free", "p-multigrid"])
+parser.add_argument("--no-doc", action="store_true")
+args = parser.parse_args()
+
+settings = {
+    "assembled": "",
+    "matrix-free": "subsection linear solver\n  set operator = matrix-free\nend\n",
+    "p-multigrid": "subsection linear solver\n  set operator = matrix-free\n  set velocity preconditioner = p-multigrid\nend\n",
+}
+work = os.path.join(root, "build", "benchmarks", "cost_3d")
+os.makedirs(work, exist_ok=True)
+env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+base = read_case("column_3d")
+results = []
+for level in args.levels:
+    span = args.end_time_level_1 if (level >= 1 and args.end_time_level_1) else args.end_time
+    for path in args.paths:
+        name = f"level_{level}_{path}"
+        prm, folder, _ = write_case(work, name, base, span,
+                                    f"\nsubsection mesh\n  set initial refinement = {level}\nend\n"
+                                    "subsection spectrum\n  set enabled = false\nend\n" + settings[path],
+                                    field_interval=0, progress_interval=100000)
+        p = subprocess.run(["mpirun", "--oversubscribe", "-np", str(args.ranks), os.path.join(root, "build", "wetbed"),
+                            prm, "--overwrite"], capture_output=True, text=True, env=env)
+        out = p.stdout
+        if p.returncode != 0:
+            print(f"{name}: exit {p.returncode}\n{out[-3000:]}\n{p.stderr[-2000:]}")
+            continue
+        cells = int(re.search(r"Mesh: (\d+) cells", out).group(1))
+        fin = re.search(r"Finished: (\d+) steps \((\d+) rejected\), wall ([\d.e+-]+) s, ([\d.e+-]+) s per simulated second", out)
+        cost = re.search(r"Cost: ([\d.e+-]+) us per flow DoF per step \((\d+) flow DoFs.*peak memory ([\d.e+-]+) MB per rank", out)
+        sections = {}
+        for m in re.finditer(r"^\| ([a-zA-Z -]+?)\s+\|\s+(\d+) \|\s+[\d.e+-]+s\s+\d+ \|\s+([\d.e+-]+)s \|", out, re.M):
+            sections[m.group(1).strip()] = float(m.group(3))
+        rows = list(csv.DictReader(open(os.path.join(folder, "monitors.csv"))))[1:]
+        solves = max(1, int(re.search(r"^\| Krylov solve\s+\|\s+(\d+)", out, re.M).group(1)))
+        per_solve = sum(int(r["krylov_iterations"]) for r in rows) / solves
+        r = dict(level=level, path=path, cells=cells, dofs=int(cost.group(2)), steps=int(fin.group(1)),
+                 rejected=int(fin.group(2)), wall=float(fin.group(3)), per_second=float(fin.group(4)),
+                 per_dof=float(cost.group(1)), memory=float(cost.group(3)), per_solve=per_solve, sections=sections,
+                 span=span)
+        results.append(r)
+        print(f"{name}: {cells} cells, {r['dofs']} flow DoFs, {r['steps']} steps ({r['rejected']} rejected), "
+              f"wall {r['wall']:.1f} s, {r['per_second']:.0f} s per simulated s, {r['per_dof']:.1f} us/DoF/step, "
+              f"FGMRES {per_solve:.1f} per solve, peak {r['memory']:.0f} MB/rank", flush=True)
+json.dump(results, open(os.path.join(work, "results.json"), "w"), indent=1)
+
+names = ["flow assembly", "matrix-free coefficients", "preconditioner setup", "Krylov solve", "alpha transport",
+         "solids pressure correction"]
+lines = [f"Command: `python3 benchmarks/cost_3d.py --end-time {args.end_time}"
+         + (f" --end-time-level-1 {args.end_time_level_1}" if args.end_time_level_1 else "")
+         + f" --ranks {args.ranks} --levels {' '.join(map(str, args.levels))}` "
+         f"(`prm/column_3d.prm`, {args.ranks} MPI ranks on this 2-core machine, the paths run one after another "
+         "in one invocation).", "",
+         "| refinement | cells | flow DoFs | path | simulated s | steps (rejected) | wall s | s per simulated s | "
+         "speed-up vs assembled | µs per DoF per step | FGMRES its per solve | peak MB per rank | "
+         + " | ".join(n + " s" for n in names) + " |",
+         "|" + "---|" * (12 + len(names))]
+for r in results:
+    reference = next((x for x in results if x["level"] == r["level"] and x["path"] == "assembled"), None)
+    ratio = f"{reference['per_second'] / r['per_second']:.2f}×" if reference else "—"
+    lines.append(f"| {r['level']} | {r['cells']} | {r['dofs']} | {r['path']} | {r['span']:g} | {r['steps']} ({r['rejected']}) | "
+                 f"{r['wall']:.1f} | {r['per_second']:.0f} | {ratio} | {r['per_dof']:.1f} | {r['per_solve']:.1f} | "
+                 f"{r['memory']:.0f} | " + " | ".join(f"{r['sections'].get(n, 0):.1f}" for n in names) + " |")
+for line in lines:
+    print(line)
+if not args.no_doc:
+    replace_doc_section(root, "cost_3d", "Cost of the 3D column by flow-solve path", lines)
+    print("updated doc/benchmarks.md")

@@ -1,0 +1,43 @@
+#pragma once
+
+#include <wetbed/core/parameters.h>
+#include <wetbed/solvers/assembled_flow_operator.h>
+#include <wetbed/solvers/matrix_free_flow_operator.h>
+#include <wetbed/solvers/velocity_multigrid.h>
+
+#include <deal.II/lac/trilinos_precondition.h>
+
+namespace wetbed
+{
+/**
+ * The block upper-triangular preconditioner of "Block preconditioner" (doc/theory.md)
+ * for the matrix-free flow operator:
+ *   y_p = -L_c^{-1} r_p,   y_u = MG(r_u - B^T y_p),
+ * MG one V-cycle of the velocity p-multigrid (VelocityMultigrid), B^T applied
+ * matrix-free, L_c^{-1} one smoothed-aggregation V-cycle on the assembled Q1 mobility
+ * Laplacian. Constrained rows: y_i = r_i / diagonal_i.
+ */
+template <int dim>
+class MatrixFreeBlockPreconditioner : public FlowPreconditioner
+{
+public:
+  using LocalVector = dealii::LinearAlgebra::distributed::Vector<double>;
+
+  /** `schur_source` holds L_c (assembled beside the system); `multigrid` is updated by
+   * the flow system with each assembly. */
+  MatrixFreeBlockPreconditioner (const AssembledFlowOperator &schur_source,
+                                 VelocityMultigrid<dim>      &multigrid);
+
+  /** From a MatrixFreeFlowOperator: the Schur hierarchy always, the velocity
+   * multigrid's coarse AMG and smoother with `rebuild_velocity`. */
+  void update (const FlowOperator &op, bool rebuild_velocity) override;
+  void vmult (BlockVector &dst, const BlockVector &src) const override;
+
+private:
+  const AssembledFlowOperator              &schur_source;
+  VelocityMultigrid<dim>                   &multigrid;
+  const MatrixFreeFlowOperator<dim>        *op = nullptr;
+  dealii::TrilinosWrappers::PreconditionAMG schur_amg;
+  mutable LocalVector                       gradient, rhs, solution;
+};
+} // namespace wetbed

@@ -1,0 +1,165 @@
+#pragma once
+
+#include <wetbed/assembly/flow/flow_assembler.h>
+#include <wetbed/solvers/assembled_flow_operator.h>
+#include <wetbed/solvers/flow_operator.h>
+
+#include <deal.II/base/vectorization.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/la_parallel_vector.h>
+#include <deal.II/matrix_free/matrix_free.h>
+
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace wetbed
+{
+/**
+ * The flow operator [[A, B^T], [B, 0]] applied without a matrix (doc/theory.md,
+ * "Matrix-free flow operator"): sum-factorised cell and boundary-face integrals
+ * (deal.II MatrixFree, FEEvaluation / FEFaceEvaluation) of the bilinear form whose
+ * coefficients the flow terms give at the quadrature points (FlowPointCoefficients,
+ * FlowFacePointCoefficients), evaluated once per assembly.
+ *
+ * MatrixFree needs vectors whose locally owned range is contiguous, which the flow
+ * DoF handler's block numbering (velocities | pressure) is not on several ranks; the
+ * operator therefore works on its own velocity (Q2^{2 dim}) and pressure (Q1) DoF
+ * handlers on the same mesh, with the flow constraints translated to them, and maps the
+ * Krylov vectors' blocks onto them. Constrained rows act as diagonal_i x_i, with the
+ * diagonal of the assembled operator's constrained rows (set_constrained_diagonal).
+ */
+template <int dim>
+class MatrixFreeFlowOperator : public FlowOperator
+{
+public:
+  using VA          = dealii::VectorizedArray<double>;
+  using LocalVector = dealii::LinearAlgebra::distributed::Vector<double>;
+
+  MatrixFreeFlowOperator ();
+
+  std::string name () const override { return "matrix-free"; }
+
+  /** For a new mesh: the velocity and pressure DoF handlers, their constraints (the
+   * homogeneous part of `flow_constraints`), the maps from the flow blocks, MatrixFree.
+   */
+  void reinit (const dealii::Mapping<dim>              &mapping,
+               const dealii::DoFHandler<dim>           &flow_dof_handler,
+               const std::vector<dealii::IndexSet>     &owned,
+               const dealii::AffineConstraints<double> &flow_constraints,
+               MPI_Comm                                 communicator);
+
+  using FlowCell = typename dealii::DoFHandler<dim>::active_cell_iterator;
+  /** Called on each locally owned cell during update() with what the assembler
+   * evaluated there (the scratch holds the cell's FE values): the velocity multigrid
+   * builds its coarse matrix and diagonal from it in the same pass. */
+  using CellObserver = std::function<void (
+      const FlowCell &,
+      const FlowCellScratch<dim> &,
+      const std::vector<FlowPointCoefficients<dim>> &,
+      const std::vector<typename FlowAssembler<dim>::FaceCoefficients> &)>;
+
+  /** The coefficients at every quadrature point for the linearisation `state`, from the
+   * terms of `assembler` (one of its terms without coefficients is an error naming it).
+   */
+  void update (const FlowAssembler<dim>     &assembler,
+               const FlowAssemblyState<dim> &state,
+               const CellObserver           &observer = CellObserver ());
+
+  /** The diagonal entries of the constrained rows, taken from `assembled`. */
+  void set_constrained_diagonal (const AssembledFlowOperator &assembled);
+
+  void vmult (BlockVector &dst, const BlockVector &src) const override;
+
+  /** The velocity space of the operator (Q2^{2 dim}, contiguous numbering). */
+  const dealii::DoFHandler<dim> &velocity_dofs () const { return velocity_dof_handler; }
+  const dealii::AffineConstraints<double> &velocity_dof_constraints () const
+  {
+    return velocity_constraints;
+  }
+  const dealii::FESystem<dim> &velocity_element () const { return velocity_fe; }
+  void                         initialize_velocity_vector (LocalVector &v) const
+  {
+    matrix_free.initialize_dof_vector (v, 0);
+  }
+  /** dst = A src on the velocities alone, constrained rows as identity. */
+  void vmult_velocity (LocalVector &dst, const LocalVector &src) const;
+  /** dst = B^T p: the pressure's part of the momentum rows (velocity layout). */
+  void vmult_gradient (LocalVector                                 &dst,
+                       const dealii::TrilinosWrappers::MPI::Vector &p) const;
+  /** The velocity block of a flow vector in the velocity layout, and back. */
+  void to_velocity (LocalVector                                 &dst,
+                    const dealii::TrilinosWrappers::MPI::Vector &src) const;
+  void from_velocity (dealii::TrilinosWrappers::MPI::Vector &dst,
+                      const LocalVector                     &src) const;
+  /** Zeroes the constrained entries of a velocity-layout vector. */
+  void zero_constrained_velocity (LocalVector &v) const
+  {
+    for (const unsigned int i : velocity_constrained_local)
+      v.local_element (i) = 0;
+  }
+  /** The constrained rows of block b (positions among its owned elements) and their
+   * diagonal entries. */
+  const std::vector<unsigned int> &constrained_rows (unsigned int b) const
+  {
+    return constrained[b];
+  }
+  const std::vector<double> &constrained_row_diagonal (unsigned int b) const
+  {
+    return constrained_diagonal[b];
+  }
+
+  /** Bytes held: MatrixFree, the coefficients, the maps and work vectors. */
+  std::size_t memory_consumption () const;
+
+private:
+  struct CellData
+  {
+    VA                         mass[2], viscosity[2], bulk[2], inertia[2], supg[2];
+    VA                         drag, alpha_s;
+    dealii::Tensor<1, dim, VA> advection[2], grad_alpha_s;
+  };
+  struct FaceData
+  {
+    VA                         friction[2], backflow, slips[2], viscosity[2], bulk[2];
+    VA                         penalty[2], fraction[2];
+    dealii::Tensor<1, dim, VA> wall_normal;
+  };
+
+  // the integrals; a null pointer leaves that block out (no input or no output)
+  void apply_cells (LocalVector       *dst_u,
+                    LocalVector       *dst_p,
+                    const LocalVector *src_u,
+                    const LocalVector *src_p) const;
+  void apply_boundary_faces (LocalVector       *dst_u,
+                             LocalVector       *dst_p,
+                             const LocalVector *src_u,
+                             const LocalVector *src_p) const;
+  void build_maps (const dealii::DoFHandler<dim>           &flow_dof_handler,
+                   const std::vector<dealii::IndexSet>     &owned,
+                   const dealii::AffineConstraints<double> &flow_constraints);
+
+  const dealii::DoFHandler<dim>      *flow_dof_handler = nullptr;
+  dealii::FESystem<dim>               velocity_fe;
+  dealii::FE_Q<dim>                   pressure_fe;
+  dealii::DoFHandler<dim>             velocity_dof_handler, pressure_dof_handler;
+  dealii::AffineConstraints<double>   velocity_constraints, pressure_constraints;
+  dealii::MatrixFree<dim, double, VA> matrix_free;
+  bool                                pressure_coupling = false;
+  std::vector<CellData>               cell_data; // [batch * n_q + q]
+  std::vector<FaceData>               face_data; // [(face - inner) * n_face_q + q]
+  // for block b, the local index in the MatrixFree vector of each locally owned
+  // element of the block (in the order of the block's owned index set)
+  std::array<std::vector<unsigned int>, 2> local_of_block;
+  // the constrained owned elements of each block and their diagonal entries
+  std::array<std::vector<unsigned int>, 2>                    constrained;
+  std::array<std::vector<dealii::types::global_dof_index>, 2> constrained_global;
+  std::array<std::vector<double>, 2>                          constrained_diagonal;
+  std::vector<unsigned int> velocity_constrained_local; // owned, MatrixFree layout
+  mutable LocalVector       src_u, src_p, dst_u, dst_p;
+};
+} // namespace wetbed

@@ -1,0 +1,539 @@
+#include <wetbed/core/input_error.h>
+#include <wetbed/solvers/matrix_free_flow_operator.h>
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/matrix_free/fe_evaluation.h>
+
+#include <map>
+#include <unordered_map>
+
+namespace wetbed
+{
+using namespace dealii;
+
+namespace
+{
+constexpr unsigned int velocity_degree = 2, n_q_1d = 3;
+} // namespace
+
+template <int dim>
+MatrixFreeFlowOperator<dim>::MatrixFreeFlowOperator ()
+    : velocity_fe (FE_Q<dim> (velocity_degree), 2 * dim), pressure_fe (1)
+{
+}
+
+template <int dim>
+void MatrixFreeFlowOperator<dim>::reinit (
+    const Mapping<dim>              &mapping,
+    const DoFHandler<dim>           &flow_dofs,
+    const std::vector<IndexSet>     &owned,
+    const AffineConstraints<double> &flow_constraints,
+    MPI_Comm                         communicator)
+{
+  (void)communicator; // the DoF handlers' triangulation carries it
+  flow_dof_handler = &flow_dofs;
+  velocity_dof_handler.reinit (flow_dofs.get_triangulation ());
+  velocity_dof_handler.distribute_dofs (velocity_fe);
+  pressure_dof_handler.reinit (flow_dofs.get_triangulation ());
+  pressure_dof_handler.distribute_dofs (pressure_fe);
+  build_maps (flow_dofs, owned, flow_constraints);
+
+  typename MatrixFree<dim, double, VA>::AdditionalData data;
+  data.tasks_parallel_scheme = MatrixFree<dim, double, VA>::AdditionalData::none;
+  data.mapping_update_flags =
+      update_values | update_gradients | update_JxW_values | update_quadrature_points;
+  data.mapping_update_flags_boundary_faces = update_values | update_gradients |
+                                             update_JxW_values | update_normal_vectors |
+                                             update_quadrature_points;
+  const std::vector<const DoFHandler<dim> *>           handlers = {&velocity_dof_handler,
+                                                                   &pressure_dof_handler};
+  const std::vector<const AffineConstraints<double> *> constraints = {
+      &velocity_constraints, &pressure_constraints};
+  matrix_free.reinit (mapping, handlers, constraints, QGauss<1> (n_q_1d), data);
+  matrix_free.initialize_dof_vector (src_u, 0);
+  matrix_free.initialize_dof_vector (dst_u, 0);
+  matrix_free.initialize_dof_vector (src_p, 1);
+  matrix_free.initialize_dof_vector (dst_p, 1);
+
+  // the MatrixFree vectors' local positions of the flow blocks' owned elements
+  const LocalVector *layout[2] = {&src_u, &src_p};
+  for (unsigned int b = 0; b < 2; ++b)
+    for (auto &index : local_of_block[b])
+      index = layout[b]->get_partitioner ()->global_to_local (index);
+  velocity_constrained_local.clear ();
+  const IndexSet velocity_owned = velocity_dof_handler.locally_owned_dofs ();
+  for (const auto index : velocity_owned)
+    if (velocity_constraints.is_constrained (index))
+      velocity_constrained_local.push_back (
+          src_u.get_partitioner ()->global_to_local (index));
+  cell_data.clear ();
+  face_data.clear ();
+}
+
+template <int dim>
+void MatrixFreeFlowOperator<dim>::build_maps (
+    const DoFHandler<dim>           &flow_dofs,
+    const std::vector<IndexSet>     &owned,
+    const AffineConstraints<double> &flow_constraints)
+{
+  // flow DoF -> (block, DoF of the velocity or pressure handler), on every cell this
+  // rank sees (the constraints of the locally relevant DoFs need their masters)
+  std::unordered_map<types::global_dof_index, types::global_dof_index> target;
+  const FiniteElement<dim>            &flow_fe = flow_dofs.get_fe ();
+  std::vector<types::global_dof_index> flow_indices (flow_fe.n_dofs_per_cell ()),
+      velocity_indices (velocity_fe.n_dofs_per_cell ()),
+      pressure_indices (pressure_fe.n_dofs_per_cell ());
+  const unsigned int n_velocity_components = 2 * dim;
+  for (const auto &cell : flow_dofs.active_cell_iterators ())
+  {
+    if (!cell->is_locally_owned () && !cell->is_ghost ())
+      continue;
+    cell->get_dof_indices (flow_indices);
+    typename DoFHandler<dim>::active_cell_iterator (&cell->get_triangulation (),
+                                                    cell->level (),
+                                                    cell->index (),
+                                                    &velocity_dof_handler)
+        ->get_dof_indices (velocity_indices);
+    typename DoFHandler<dim>::active_cell_iterator (&cell->get_triangulation (),
+                                                    cell->level (),
+                                                    cell->index (),
+                                                    &pressure_dof_handler)
+        ->get_dof_indices (pressure_indices);
+    for (unsigned int i = 0; i < flow_indices.size (); ++i)
+    {
+      const auto [component, a] = flow_fe.system_to_component_index (i);
+      target[flow_indices[i]] =
+          component < n_velocity_components
+              ? velocity_indices[velocity_fe.component_to_system_index (component, a)]
+              : pressure_indices[a];
+    }
+  }
+
+  const types::global_dof_index n_velocity = owned[0].size ();
+  const IndexSet                own[2]     = {velocity_dof_handler.locally_owned_dofs (),
+                                              pressure_dof_handler.locally_owned_dofs ()};
+  for (unsigned int b = 0; b < 2; ++b)
+  {
+    local_of_block[b].clear ();
+    constrained[b].clear ();
+    constrained_global[b].clear ();
+    unsigned int i = 0;
+    for (const auto index : owned[b])
+    {
+      const types::global_dof_index global = index + (b == 1 ? n_velocity : 0);
+      const types::global_dof_index mapped = target.at (global);
+      AssertThrow (own[b].is_element (mapped),
+                   ExcMessage ("matrix-free flow operator: a flow DoF and its velocity/"
+                               "pressure DoF are owned by different ranks"));
+      local_of_block[b].push_back (mapped); // made local in reinit()
+      if (flow_constraints.is_constrained (global))
+      {
+        constrained[b].push_back (i);
+        constrained_global[b].push_back (index);
+      }
+      ++i;
+    }
+    constrained_diagonal[b].assign (constrained[b].size (), 1.0);
+  }
+
+  // the homogeneous part of the flow constraints, in the new numberings
+  AffineConstraints<double> *translated[2] = {&velocity_constraints,
+                                              &pressure_constraints};
+  const IndexSet             relevant[2]   = {
+                    DoFTools::extract_locally_relevant_dofs (velocity_dof_handler),
+                    DoFTools::extract_locally_relevant_dofs (pressure_dof_handler)};
+  for (unsigned int b = 0; b < 2; ++b)
+  {
+    translated[b]->clear ();
+    translated[b]->reinit (relevant[b]);
+  }
+  for (const auto &line : flow_constraints.get_lines ())
+  {
+    const auto found = target.find (line.index);
+    if (found == target.end ())
+      continue;
+    const unsigned int b = line.index < n_velocity ? 0 : 1;
+    translated[b]->add_line (found->second);
+    for (const auto &entry : line.entries)
+      translated[b]->add_entry (found->second, target.at (entry.first), entry.second);
+  }
+  for (unsigned int b = 0; b < 2; ++b)
+    translated[b]->close ();
+}
+
+template <int dim>
+void MatrixFreeFlowOperator<dim>::update (const FlowAssembler<dim>     &assembler,
+                                          const FlowAssemblyState<dim> &state,
+                                          const CellObserver           &observer)
+{
+  const std::string missing = assembler.term_without_coefficients ();
+  require (missing.empty (),
+           "linear solver/operator",
+           "matrix-free cannot apply the flow term '" + missing +
+               "' (it has no matrix-free coefficients); use 'assembled'");
+  const unsigned int n_q  = Utilities::pow (n_q_1d, dim);
+  const unsigned int n_fq = Utilities::pow (n_q_1d, dim - 1);
+  cell_data.assign (matrix_free.n_cell_batches () * n_q, CellData ());
+  pressure_coupling = false;
+
+  using FaceKey = std::pair<std::pair<int, int>, unsigned int>; // (level, index), face
+  std::map<FaceKey, typename FlowAssembler<dim>::FaceCoefficients> faces_found;
+  FlowCellScratch<dim>                    scratch = assembler.make_scratch ();
+  std::vector<FlowPointCoefficients<dim>> values;
+  std::vector<typename FlowAssembler<dim>::FaceCoefficients> faces;
+  for (unsigned int batch = 0; batch < matrix_free.n_cell_batches (); ++batch)
+    for (unsigned int lane = 0;
+         lane < matrix_free.n_active_entries_per_cell_batch (batch);
+         ++lane)
+    {
+      const auto cell = matrix_free.get_cell_iterator (batch, lane, 0);
+      const typename DoFHandler<dim>::active_cell_iterator flow_cell (
+          &cell->get_triangulation (), cell->level (), cell->index (), flow_dof_handler);
+      assembler.cell_coefficients (flow_cell, state, scratch, values, faces);
+      if (observer)
+        observer (flow_cell, scratch, values, faces);
+      for (unsigned int q = 0; q < n_q; ++q)
+      {
+        const FlowPointCoefficients<dim> &c = values[q];
+        CellData                         &d = cell_data[batch * n_q + q];
+        for (unsigned int k = 0; k < 2; ++k)
+        {
+          d.mass[k][lane]      = c.mass[k];
+          d.viscosity[k][lane] = c.viscosity[k];
+          d.bulk[k][lane]      = c.bulk[k];
+          d.inertia[k][lane]   = c.inertia[k];
+          d.supg[k][lane]      = c.supg[k];
+          for (unsigned int e = 0; e < dim; ++e)
+            d.advection[k][e][lane] = c.advection[k][e];
+        }
+        d.drag[lane]    = c.drag;
+        d.alpha_s[lane] = c.alpha_s;
+        for (unsigned int e = 0; e < dim; ++e)
+          d.grad_alpha_s[e][lane] = c.grad_alpha_s[e];
+        pressure_coupling = pressure_coupling || c.pressure_coupling;
+      }
+      for (unsigned int f = 0; f < faces.size (); ++f)
+        if (!faces[f].values.empty ())
+          faces_found[{{cell->level (), cell->index ()}, f}] = faces[f];
+    }
+
+  // the boundary faces' coefficients, matched to MatrixFree's face points
+  const unsigned int first      = matrix_free.n_inner_face_batches (),
+                     n_boundary = matrix_free.n_boundary_face_batches ();
+  face_data.assign (n_boundary * n_fq, FaceData ());
+  FEFaceEvaluation<dim, velocity_degree, n_q_1d, 2 * dim, double> phi (
+      matrix_free, true, 0);
+  for (unsigned int face = first; face < first + n_boundary; ++face)
+  {
+    phi.reinit (face);
+    for (unsigned int lane = 0; lane < matrix_free.n_active_entries_per_face_batch (face);
+         ++lane)
+    {
+      const auto [cell, face_number] = matrix_free.get_face_iterator (face, lane, true);
+      const auto found =
+          faces_found.find ({{cell->level (), cell->index ()}, face_number});
+      if (found == faces_found.end ())
+        continue;
+      const auto  &points    = found->second.points;
+      const double tolerance = 1e-6 * cell->diameter ();
+      for (unsigned int q = 0; q < n_fq; ++q)
+      {
+        Point<dim> x;
+        for (unsigned int e = 0; e < dim; ++e)
+          x[e] = phi.quadrature_point (q)[e][lane];
+        unsigned int nearest = 0;
+        for (unsigned int r = 1; r < points.size (); ++r)
+          if (x.distance (points[r]) < x.distance (points[nearest]))
+            nearest = r;
+        AssertThrow (x.distance (points[nearest]) < tolerance,
+                     ExcMessage ("matrix-free flow operator: face points do not match"));
+        const FlowFacePointCoefficients<dim> &c = found->second.values[nearest];
+        FaceData                             &d = face_data[(face - first) * n_fq + q];
+        d.backflow[lane]                        = c.backflow;
+        for (unsigned int k = 0; k < 2; ++k)
+        {
+          d.friction[k][lane]  = c.friction[k];
+          d.slips[k][lane]     = c.slips[k] ? 1.0 : 0.0;
+          d.viscosity[k][lane] = c.viscosity[k];
+          d.bulk[k][lane]      = c.bulk[k];
+          d.penalty[k][lane]   = c.penalty[k];
+          d.fraction[k][lane]  = c.fraction[k];
+        }
+        for (unsigned int e = 0; e < dim; ++e)
+          d.wall_normal[e][lane] = c.wall_normal[e];
+      }
+    }
+  }
+}
+
+template <int dim>
+void MatrixFreeFlowOperator<dim>::set_constrained_diagonal (
+    const AssembledFlowOperator &assembled)
+{
+  for (unsigned int b = 0; b < 2; ++b)
+    for (unsigned int i = 0; i < constrained[b].size (); ++i)
+      constrained_diagonal[b][i] =
+          assembled.system.block (b, b).diag_element (constrained_global[b][i]);
+}
+
+template <int dim>
+void MatrixFreeFlowOperator<dim>::apply_cells (LocalVector       *dst_velocity,
+                                               LocalVector       *dst_pressure,
+                                               const LocalVector *src_velocity,
+                                               const LocalVector *src_pressure) const
+{
+  const bool         pressure_in   = pressure_coupling && src_pressure != nullptr;
+  const bool         pressure_rows = pressure_coupling && dst_pressure != nullptr;
+  const unsigned int n_q           = Utilities::pow (n_q_1d, dim);
+  FEEvaluation<dim, velocity_degree, n_q_1d, 2 * dim, double> u (matrix_free, 0);
+  FEEvaluation<dim, 1, n_q_1d, 1, double>                     p (matrix_free, 1);
+  const auto both = EvaluationFlags::values | EvaluationFlags::gradients;
+  for (unsigned int cell = 0; cell < matrix_free.n_cell_batches (); ++cell)
+  {
+    u.reinit (cell);
+    p.reinit (cell);
+    if (src_velocity != nullptr)
+      u.gather_evaluate (*src_velocity, both);
+    if (pressure_in)
+      p.gather_evaluate (*src_pressure, EvaluationFlags::values);
+    const CellData *data = &cell_data[cell * n_q];
+    for (unsigned int q = 0; q < n_q; ++q)
+    {
+      const CellData                        &c = data[q];
+      Tensor<1, 2 * dim, VA>                 value;
+      Tensor<1, 2 * dim, Tensor<1, dim, VA>> grad;
+      if (src_velocity != nullptr)
+      {
+        value = u.get_value (q);
+        grad  = u.get_gradient (q);
+      }
+      const VA               pressure = pressure_in ? p.get_value (q) : VA (0.0);
+      Tensor<1, 2 * dim, VA> value_out;
+      Tensor<1, 2 * dim, Tensor<1, dim, VA>> grad_out;
+      VA                                     continuity = 0.0;
+      for (unsigned int k = 0; k < 2; ++k)
+      {
+        const unsigned int o = k * dim, other = (1 - k) * dim;
+        const VA           fraction = k == 0 ? VA (1.0) - c.alpha_s : c.alpha_s;
+        const double       sign     = k == 0 ? -1.0 : 1.0; // grad f_k = sign grad alpha_s
+        VA                 divergence = 0.0, grad_fraction_u = 0.0;
+        Tensor<1, dim, VA> convective;
+        for (unsigned int d = 0; d < dim; ++d)
+        {
+          divergence += grad[o + d][d];
+          grad_fraction_u += c.grad_alpha_s[d] * value[o + d];
+          for (unsigned int e = 0; e < dim; ++e)
+            convective[d] += grad[o + d][e] * c.advection[k][e];
+        }
+        for (unsigned int d = 0; d < dim; ++d)
+        {
+          value_out[o + d] = c.mass[k] * value[o + d] + c.inertia[k] * convective[d] +
+                             c.drag * (value[o + d] - value[other + d]) -
+                             sign * pressure * c.grad_alpha_s[d];
+          for (unsigned int e = 0; e < dim; ++e)
+            grad_out[o + d][e] = c.viscosity[k] * (grad[o + d][e] + grad[o + e][d]) +
+                                 c.supg[k] * convective[d] * c.advection[k][e];
+          grad_out[o + d][d] += c.bulk[k] * divergence - pressure * fraction;
+        }
+        continuity -= fraction * divergence + sign * grad_fraction_u;
+      }
+      if (dst_velocity != nullptr)
+      {
+        u.submit_value (value_out, q);
+        u.submit_gradient (grad_out, q);
+      }
+      if (pressure_rows)
+        p.submit_value (continuity, q);
+    }
+    if (dst_velocity != nullptr)
+      u.integrate_scatter (both, *dst_velocity);
+    if (pressure_rows)
+      p.integrate_scatter (EvaluationFlags::values, *dst_pressure);
+  }
+}
+
+template <int dim>
+void MatrixFreeFlowOperator<dim>::apply_boundary_faces (
+    LocalVector       *dst_velocity,
+    LocalVector       *dst_pressure,
+    const LocalVector *src_velocity,
+    const LocalVector *src_pressure) const
+{
+  const unsigned int n_fq  = Utilities::pow (n_q_1d, dim - 1);
+  const unsigned int first = matrix_free.n_inner_face_batches ();
+  FEFaceEvaluation<dim, velocity_degree, n_q_1d, 2 * dim, double> u (
+      matrix_free, true, 0);
+  FEFaceEvaluation<dim, 1, n_q_1d, 1, double> p (matrix_free, true, 1);
+  const auto both = EvaluationFlags::values | EvaluationFlags::gradients;
+  for (unsigned int face = first; face < first + matrix_free.n_boundary_face_batches ();
+       ++face)
+  {
+    const FaceData *data = &face_data[(face - first) * n_fq];
+    u.reinit (face);
+    p.reinit (face);
+    if (src_velocity != nullptr)
+      u.gather_evaluate (*src_velocity, both);
+    if (src_pressure != nullptr)
+      p.gather_evaluate (*src_pressure, EvaluationFlags::values);
+    for (unsigned int q = 0; q < n_fq; ++q)
+    {
+      const FaceData                        &c = data[q];
+      Tensor<1, 2 * dim, VA>                 value;
+      Tensor<1, 2 * dim, Tensor<1, dim, VA>> grad;
+      if (src_velocity != nullptr)
+      {
+        value = u.get_value (q);
+        grad  = u.get_gradient (q);
+      }
+      const VA    pressure = src_pressure != nullptr ? p.get_value (q) : VA (0.0);
+      const auto  n_h      = u.get_normal_vector (q);
+      const auto &n        = c.wall_normal;
+      Tensor<1, 2 * dim, VA>                 value_out;
+      Tensor<1, 2 * dim, Tensor<1, dim, VA>> grad_out;
+      VA                                     continuity = 0.0;
+      for (unsigned int k = 0; k < 2; ++k)
+      {
+        const unsigned int o  = k * dim;
+        VA mapped_normal_part = 0.0, normal_part = 0.0, divergence = 0.0, stretch = 0.0;
+        for (unsigned int d = 0; d < dim; ++d)
+        {
+          mapped_normal_part += value[o + d] * n_h[d];
+          normal_part += value[o + d] * n[d];
+          divergence += grad[o + d][d];
+          for (unsigned int e = 0; e < dim; ++e)
+            stretch += n[d] * grad[o + d][e] * n[e];
+        }
+        // n.tau_k(u_k) n, and the Nitsche terms masked to the slipping phases
+        const VA normal_stress = 2.0 * c.viscosity[k] * stretch + c.bulk[k] * divergence;
+        const VA weak_value = c.slips[k] * (c.penalty[k] * normal_part - normal_stress +
+                                            c.fraction[k] * pressure);
+        const VA weak_gradient = c.slips[k] * normal_part;
+        for (unsigned int d = 0; d < dim; ++d)
+        {
+          value_out[o + d] =
+              c.friction[k] * (value[o + d] - mapped_normal_part * n_h[d]) +
+              weak_value * n[d];
+          if (k == 0)
+            value_out[o + d] += c.backflow * value[o + d];
+          for (unsigned int e = 0; e < dim; ++e)
+            grad_out[o + d][e] = -weak_gradient * 2.0 * c.viscosity[k] * n[d] * n[e];
+          grad_out[o + d][d] -= weak_gradient * c.bulk[k];
+        }
+        continuity += c.slips[k] * c.fraction[k] * normal_part;
+      }
+      if (dst_velocity != nullptr)
+      {
+        u.submit_value (value_out, q);
+        u.submit_gradient (grad_out, q);
+      }
+      if (dst_pressure != nullptr)
+        p.submit_value (continuity, q);
+    }
+    if (dst_velocity != nullptr)
+      u.integrate_scatter (both, *dst_velocity);
+    if (dst_pressure != nullptr)
+      p.integrate_scatter (EvaluationFlags::values, *dst_pressure);
+  }
+}
+
+template <int dim>
+void MatrixFreeFlowOperator<dim>::vmult (BlockVector &dst, const BlockVector &src) const
+{
+  to_velocity (src_u, src.block (0));
+  {
+    const double *values = src.block (1).begin ();
+    for (unsigned int i = 0; i < local_of_block[1].size (); ++i)
+      src_p.local_element (local_of_block[1][i]) = values[i];
+  }
+  src_u.update_ghost_values ();
+  src_p.update_ghost_values ();
+  dst_u = 0.0;
+  dst_p = 0.0;
+  apply_cells (&dst_u, &dst_p, &src_u, &src_p);
+  if (!face_data.empty ())
+    apply_boundary_faces (&dst_u, &dst_p, &src_u, &src_p);
+  LocalVector *in[2] = {&src_u, &src_p}, *out[2] = {&dst_u, &dst_p};
+  for (unsigned int b = 0; b < 2; ++b)
+  {
+    out[b]->compress (VectorOperation::add);
+    in[b]->zero_out_ghost_values ();
+    double       *result = dst.block (b).begin ();
+    const double *values = src.block (b).begin ();
+    for (unsigned int i = 0; i < local_of_block[b].size (); ++i)
+      result[i] = out[b]->local_element (local_of_block[b][i]);
+    for (unsigned int i = 0; i < constrained[b].size (); ++i)
+      result[constrained[b][i]] = constrained_diagonal[b][i] * values[constrained[b][i]];
+  }
+}
+
+template <int dim>
+void MatrixFreeFlowOperator<dim>::vmult_velocity (LocalVector       &dst,
+                                                  const LocalVector &src) const
+{
+  src.update_ghost_values ();
+  dst = 0.0;
+  apply_cells (&dst, nullptr, &src, nullptr);
+  if (!face_data.empty ())
+    apply_boundary_faces (&dst, nullptr, &src, nullptr);
+  dst.compress (VectorOperation::add);
+  src.zero_out_ghost_values ();
+  for (const unsigned int i : velocity_constrained_local)
+    dst.local_element (i) = src.local_element (i);
+}
+
+template <int dim>
+void MatrixFreeFlowOperator<dim>::vmult_gradient (
+    LocalVector &dst, const TrilinosWrappers::MPI::Vector &p) const
+{
+  const double *values = p.begin ();
+  for (unsigned int i = 0; i < local_of_block[1].size (); ++i)
+    src_p.local_element (local_of_block[1][i]) = values[i];
+  src_p.update_ghost_values ();
+  dst = 0.0;
+  apply_cells (&dst, nullptr, nullptr, &src_p);
+  if (!face_data.empty ())
+    apply_boundary_faces (&dst, nullptr, nullptr, &src_p);
+  dst.compress (VectorOperation::add);
+  src_p.zero_out_ghost_values ();
+  for (const unsigned int i : velocity_constrained_local)
+    dst.local_element (i) = 0;
+}
+
+template <int dim>
+void MatrixFreeFlowOperator<dim>::to_velocity (
+    LocalVector &dst, const TrilinosWrappers::MPI::Vector &src) const
+{
+  const double *values = src.begin ();
+  for (unsigned int i = 0; i < local_of_block[0].size (); ++i)
+    dst.local_element (local_of_block[0][i]) = values[i];
+}
+
+template <int dim>
+void MatrixFreeFlowOperator<dim>::from_velocity (TrilinosWrappers::MPI::Vector &dst,
+                                                 const LocalVector             &src) const
+{
+  double *values = dst.begin ();
+  for (unsigned int i = 0; i < local_of_block[0].size (); ++i)
+    values[i] = src.local_element (local_of_block[0][i]);
+}
+
+template <int dim>
+std::size_t MatrixFreeFlowOperator<dim>::memory_consumption () const
+{
+  std::size_t bytes =
+      matrix_free.memory_consumption () + cell_data.size () * sizeof (CellData) +
+      face_data.size () * sizeof (FaceData) + velocity_dof_handler.memory_consumption () +
+      pressure_dof_handler.memory_consumption () +
+      velocity_constraints.memory_consumption () +
+      pressure_constraints.memory_consumption ();
+  for (unsigned int b = 0; b < 2; ++b)
+    bytes += local_of_block[b].size () * sizeof (unsigned int);
+  for (const LocalVector *v : {&src_u, &src_p, &dst_u, &dst_p})
+    bytes += v->memory_consumption ();
+  return bytes;
+}
+
+template class MatrixFreeFlowOperator<2>;
+template class MatrixFreeFlowOperator<3>;
+} // namespace wetbed
