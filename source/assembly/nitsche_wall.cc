@@ -12,7 +12,7 @@ void add_nitsche_no_penetration (const FEFaceValues<dim>           &face_values,
                                  const std::array<NitschePhase, 2> &phases,
                                  const double                       gamma,
                                  const double                       h,
-                                 FullMatrix<double>                &cell_matrix,
+                                 FullMatrix<double>                *cell_matrix,
                                  Vector<double>                    &cell_rhs)
 {
   const double       JxW      = face_values.JxW (q);
@@ -45,6 +45,8 @@ void add_nitsche_no_penetration (const FEFaceValues<dim>           &face_values,
       if (!phase.slips)
         continue;
       cell_rhs (i) -= phase.normal_pressure * normal_part[i] * JxW;
+      if (cell_matrix == nullptr)
+        continue;
       const double penalty = gamma * phase.penalty_scale / h;
       for (unsigned int j = 0; j < n_dofs; ++j)
       {
@@ -54,15 +56,15 @@ void add_nitsche_no_penetration (const FEFaceValues<dim>           &face_values,
                   penalty * normal_part[i] * normal_part[j];
         else if (phase_of[j] == 2) // + alpha_k p (v.n)
           entry = phase.fraction * value[j] * normal_part[i];
-        cell_matrix (i, j) += entry * JxW;
+        (*cell_matrix) (i, j) += entry * JxW;
       }
     }
-    else // continuity: + alpha_k q (u_k.n)
+    else if (cell_matrix != nullptr) // continuity: + alpha_k q (u_k.n)
       for (unsigned int j = 0; j < n_dofs; ++j)
       {
         const unsigned int l = phase_of[j];
         if (l < 2 && phases[l].slips)
-          cell_matrix (i, j) += phases[l].fraction * value[i] * normal_part[j] * JxW;
+          (*cell_matrix) (i, j) += phases[l].fraction * value[i] * normal_part[j] * JxW;
       }
   }
 }
@@ -74,7 +76,7 @@ template void add_nitsche_no_penetration<2> (const FEFaceValues<2> &,
                                              const std::array<NitschePhase, 2> &,
                                              double,
                                              double,
-                                             FullMatrix<double> &,
+                                             FullMatrix<double> *,
                                              Vector<double> &);
 template void add_nitsche_no_penetration<3> (const FEFaceValues<3> &,
                                              unsigned int,
@@ -83,6 +85,6 @@ template void add_nitsche_no_penetration<3> (const FEFaceValues<3> &,
                                              const std::array<NitschePhase, 2> &,
                                              double,
                                              double,
-                                             FullMatrix<double> &,
+                                             FullMatrix<double> *,
                                              Vector<double> &);
 } // namespace wetbed

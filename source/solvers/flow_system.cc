@@ -39,15 +39,6 @@ void FlowSystem<dim>::reinit (const Mapping<dim>              &mapping,
   const IndexSet all_relevant =
       DoFTools::extract_locally_relevant_dofs (flow_dof_handler);
   {
-    Table<2, DoFTools::Coupling> coupling (2 * dim + 1, 2 * dim + 1);
-    for (unsigned int c = 0; c < 2 * dim + 1; ++c)
-      for (unsigned int d = 0; d < 2 * dim + 1; ++d)
-        coupling[c][d] = DoFTools::always; // (p,p) kept for constrained pressure rows
-    BlockDynamicSparsityPattern dsp (relevant);
-    DoFTools::make_sparsity_pattern (
-        flow_dof_handler, coupling, dsp, flow_constraints, false);
-    SparsityTools::distribute_sparsity_pattern (
-        dsp, all_owned, communicator, all_relevant);
     Table<2, DoFTools::Coupling> schur_coupling (2 * dim + 1, 2 * dim + 1);
     for (unsigned int c = 0; c < 2 * dim + 1; ++c)
       for (unsigned int d = 0; d < 2 * dim + 1; ++d)
@@ -58,7 +49,21 @@ void FlowSystem<dim>::reinit (const Mapping<dim>              &mapping,
         flow_dof_handler, schur_coupling, schur_dsp, schur_constraints, false);
     SparsityTools::distribute_sparsity_pattern (
         schur_dsp, all_owned, communicator, all_relevant);
-    op.reinit (owned, dsp, schur_dsp, communicator);
+    if (assembled_matrix_needed ())
+    {
+      Table<2, DoFTools::Coupling> coupling (2 * dim + 1, 2 * dim + 1);
+      for (unsigned int c = 0; c < 2 * dim + 1; ++c)
+        for (unsigned int d = 0; d < 2 * dim + 1; ++d)
+          coupling[c][d] = DoFTools::always; // (p,p) kept for constrained pressure rows
+      BlockDynamicSparsityPattern dsp (relevant);
+      DoFTools::make_sparsity_pattern (
+          flow_dof_handler, coupling, dsp, flow_constraints, false);
+      SparsityTools::distribute_sparsity_pattern (
+          dsp, all_owned, communicator, all_relevant);
+      op.reinit (owned, dsp, schur_dsp, communicator);
+    }
+    else
+      op.reinit_schur (owned, schur_dsp, communicator);
   }
   {
     std::vector<bool> velocity (2 * dim + 1, true);
@@ -100,13 +105,47 @@ void FlowSystem<dim>::reinit (const Mapping<dim>              &mapping,
   preconditioner = std::make_unique<BlockPreconditioner> (parameters.linear_solver);
   preconditioner->velocity_builds = velocity_builds;
   preconditioner->schur_builds    = schur_builds;
-  VelocityNearNullSpace space =
-      velocity_near_null_space (mapping,
-                                flow_dof_handler,
-                                owned[0],
-                                parameters.linear_solver.rotation_modes,
-                                communicator);
-  preconditioner->set_near_null_space (std::move (space.modes), space.dofs_per_node);
+  if (!parameters.linear_solver.p_multigrid)
+  {
+    VelocityNearNullSpace space =
+        velocity_near_null_space (mapping,
+                                  flow_dof_handler,
+                                  owned[0],
+                                  parameters.linear_solver.rotation_modes,
+                                  communicator);
+    preconditioner->set_near_null_space (std::move (space.modes), space.dofs_per_node);
+  }
+  // the reactions' weighted rows for the matrix-free path (block-0 positions)
+  for (unsigned int b = 0; b < 3; ++b)
+    reaction_weights[b].clear ();
+  if (!assembled_matrix_needed ())
+  {
+    const auto                          &fe = flow_dof_handler.get_fe ();
+    std::vector<types::global_dof_index> dofs (fe.n_dofs_per_cell ());
+    std::vector<bool>                    seen (owned[0].n_elements (), false);
+    for (const auto &cell : flow_dof_handler.active_cell_iterators ())
+      if (cell->is_locally_owned () && cell->at_boundary ())
+      {
+        cell->get_dof_indices (dofs);
+        for (unsigned int i = 0; i < dofs.size (); ++i)
+        {
+          const unsigned int c = fe.system_to_component_index (i).first;
+          if (c >= 2 * dim || !owned[0].is_element (dofs[i]))
+            continue;
+          const unsigned int position = owned[0].index_within_set (dofs[i]);
+          if (seen[position])
+            continue;
+          seen[position] = true;
+          for (unsigned int b = 0; b < 3; ++b)
+            if (boundary_velocity_dofs[b].is_element (dofs[i]))
+            {
+              if (up[c % dim] != 0)
+                reaction_weights[b].emplace_back (position, up[c % dim]);
+              break;
+            }
+        }
+      }
+  }
   linear_solver.reset ();
 }
 
@@ -127,7 +166,13 @@ void FlowSystem<dim>::assemble (const FlowAssemblyState<dim>    &state,
   assembled_flow  = *state.flow;
   const typename FlowAssembler<dim>::BoundaryRowCapture capture{
       &boundary_velocity_dofs, up, &boundary_cell_systems};
-  assembler->assemble (state, flow_constraints, schur_constraints, op, rhs, capture);
+  assembler->assemble (state,
+                       flow_constraints,
+                       schur_constraints,
+                       op,
+                       rhs,
+                       capture,
+                       assembled_matrix_needed ());
   if (parameters.linear_solver.matrix_free)
   {
     TimerOutput::Scope mf_scope (timer, "matrix-free coefficients");
@@ -145,7 +190,8 @@ void FlowSystem<dim>::assemble (const FlowAssemblyState<dim>    &state,
     }
     else
       matrix_free_op.update (*assembler, state);
-    matrix_free_op.set_constrained_diagonal (op);
+    if (assembled_matrix_needed ())
+      matrix_free_op.set_constrained_diagonal (op);
   }
   if (parameters.linear_solver.matrix_free && parameters.linear_solver.check_operator)
     check_operator ();
@@ -231,6 +277,16 @@ FlowSystem<dim>::boundary_reactions (const BlockVector &solution) const
       for (unsigned int j = 0; j < system.row[b].size (); ++j)
         residual[b] += system.row[b][j] * solution (system.dofs[j]);
     }
+  if (!assembled_matrix_needed ())
+  {
+    // the rows' matrix part applied matrix-free (the assembly kept their rhs part)
+    BlockVector owned_solution (owned, communicator);
+    owned_solution = solution;
+    const std::array<double, 3> rows =
+        matrix_free_op.weighted_row_sums (owned_solution, reaction_weights);
+    for (unsigned int b = 0; b < 3; ++b)
+      residual[b] += rows[b];
+  }
   // the rows lack the boundary terms of the integration by parts, -int (-p' I + tau) n
   // . v: what they leave unbalanced is the force the boundary exerts (0 on free rows)
   for (double &r : residual)

@@ -46,15 +46,24 @@ void MatrixFreeFlowOperator<dim>::reinit (
   data.mapping_update_flags_boundary_faces = update_values | update_gradients |
                                              update_JxW_values | update_normal_vectors |
                                              update_quadrature_points;
-  const std::vector<const DoFHandler<dim> *>           handlers = {&velocity_dof_handler,
-                                                                   &pressure_dof_handler};
+  // 0, 1: with the constraints (the operator); 2, 3: without any (the unconstrained
+  // rows of the boundary reactions)
+  const std::vector<const DoFHandler<dim> *> handlers = {&velocity_dof_handler,
+                                                         &pressure_dof_handler,
+                                                         &velocity_dof_handler,
+                                                         &pressure_dof_handler};
+  unconstrained.clear ();
+  unconstrained.close ();
   const std::vector<const AffineConstraints<double> *> constraints = {
-      &velocity_constraints, &pressure_constraints};
+      &velocity_constraints, &pressure_constraints, &unconstrained, &unconstrained};
   matrix_free.reinit (mapping, handlers, constraints, QGauss<1> (n_q_1d), data);
   matrix_free.initialize_dof_vector (src_u, 0);
   matrix_free.initialize_dof_vector (dst_u, 0);
   matrix_free.initialize_dof_vector (src_p, 1);
   matrix_free.initialize_dof_vector (dst_p, 1);
+  matrix_free.initialize_dof_vector (plain_u, 2);
+  matrix_free.initialize_dof_vector (plain_p, 3);
+  matrix_free.initialize_dof_vector (plain_result, 2);
 
   // the MatrixFree vectors' local positions of the flow blocks' owned elements
   const LocalVector *layout[2] = {&src_u, &src_p};
@@ -281,13 +290,14 @@ template <int dim>
 void MatrixFreeFlowOperator<dim>::apply_cells (LocalVector       *dst_velocity,
                                                LocalVector       *dst_pressure,
                                                const LocalVector *src_velocity,
-                                               const LocalVector *src_pressure) const
+                                               const LocalVector *src_pressure,
+                                               const unsigned int first_dof) const
 {
   const bool         pressure_in   = pressure_coupling && src_pressure != nullptr;
   const bool         pressure_rows = pressure_coupling && dst_pressure != nullptr;
   const unsigned int n_q           = Utilities::pow (n_q_1d, dim);
-  FEEvaluation<dim, velocity_degree, n_q_1d, 2 * dim, double> u (matrix_free, 0);
-  FEEvaluation<dim, 1, n_q_1d, 1, double>                     p (matrix_free, 1);
+  FEEvaluation<dim, velocity_degree, n_q_1d, 2 * dim, double> u (matrix_free, first_dof);
+  FEEvaluation<dim, 1, n_q_1d, 1, double> p (matrix_free, first_dof + 1);
   const auto both = EvaluationFlags::values | EvaluationFlags::gradients;
   for (unsigned int cell = 0; cell < matrix_free.n_cell_batches (); ++cell)
   {
@@ -358,7 +368,8 @@ void MatrixFreeFlowOperator<dim>::apply_boundary_faces (
     LocalVector       *dst_velocity,
     LocalVector       *dst_pressure,
     const LocalVector *src_velocity,
-    const LocalVector *src_pressure) const
+    const LocalVector *src_pressure,
+    const unsigned int first_dof) const
 {
   const unsigned int n_fq  = Utilities::pow (n_q_1d, dim - 1);
   const unsigned int first = matrix_free.n_inner_face_batches ();
@@ -516,6 +527,36 @@ void MatrixFreeFlowOperator<dim>::from_velocity (TrilinosWrappers::MPI::Vector &
   double *values = dst.begin ();
   for (unsigned int i = 0; i < local_of_block[0].size (); ++i)
     values[i] = src.local_element (local_of_block[0][i]);
+}
+
+template <int dim>
+std::array<double, 3> MatrixFreeFlowOperator<dim>::weighted_row_sums (
+    const BlockVector                                                 &solution,
+    const std::array<std::vector<std::pair<unsigned int, double>>, 3> &weights) const
+{
+  std::array<double, 3> sums = {{0, 0, 0}};
+  if (cell_data.empty ()) // nothing assembled yet (the initial monitors row)
+    return sums;
+  // the owned positions of the MatrixFree vectors are those of the constrained layout
+  const double *velocity = solution.block (0).begin (),
+               *pressure = solution.block (1).begin ();
+  for (unsigned int i = 0; i < local_of_block[0].size (); ++i)
+    plain_u.local_element (local_of_block[0][i]) = velocity[i];
+  for (unsigned int i = 0; i < local_of_block[1].size (); ++i)
+    plain_p.local_element (local_of_block[1][i]) = pressure[i];
+  plain_u.update_ghost_values ();
+  plain_p.update_ghost_values ();
+  plain_result = 0.0;
+  apply_cells (&plain_result, nullptr, &plain_u, &plain_p, 2);
+  if (!face_data.empty ())
+    apply_boundary_faces (&plain_result, nullptr, &plain_u, &plain_p, 2);
+  plain_result.compress (VectorOperation::add);
+  plain_u.zero_out_ghost_values ();
+  plain_p.zero_out_ghost_values ();
+  for (unsigned int b = 0; b < 3; ++b)
+    for (const auto &[position, weight] : weights[b])
+      sums[b] += weight * plain_result.local_element (local_of_block[0][position]);
+  return sums;
 }
 
 template <int dim>

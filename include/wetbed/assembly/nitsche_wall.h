@@ -24,6 +24,7 @@ namespace wetbed
  * The penalty scale mu*_k = mu_k + alpha_k rho_k |u_k| h + alpha_k rho_k h^2/dt + beta
  * h^2 keeps the term active where inertia or drag dominate the viscosity (Massing,
  * Schott, Wall); gamma = gamma_0 (degree + 1)^2.
+ * cell_matrix may be null (the right-hand side alone).
  * n is the wall normal given by the caller: on a curved wall the manifold's normal at the
  * quadrature point, not the normal of the mapped (Q2) face. The mapped normal is off by
  * O(h^2) between the nodes, so u.n_h = 0 imposed weakly there perturbs the boundary data
@@ -49,6 +50,6 @@ void add_nitsche_no_penetration (const dealii::FEFaceValues<dim>   &face_values,
                                  const std::array<NitschePhase, 2> &phases,
                                  double                             gamma,
                                  double                             h,
-                                 dealii::FullMatrix<double>        &cell_matrix,
+                                 dealii::FullMatrix<double>        *cell_matrix,
                                  dealii::Vector<double>            &cell_rhs);
 } // namespace wetbed

@@ -31,6 +31,15 @@ public:
     schur.reinit (owned, schur_pattern, communicator);
   }
 
+  /** L_c alone (the system applied matrix-free and preconditioned without it). */
+  void reinit_schur (const std::vector<dealii::IndexSet>       &owned,
+                     const dealii::BlockDynamicSparsityPattern &schur_pattern,
+                     MPI_Comm                                   communicator)
+  {
+    system.clear ();
+    schur.reinit (owned, schur_pattern, communicator);
+  }
+
   const dealii::TrilinosWrappers::SparseMatrix &velocity_block () const
   {
     return system.block (0, 0);

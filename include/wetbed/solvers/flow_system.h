@@ -94,6 +94,14 @@ public:
     return parameters.linear_solver.p_multigrid ? multigrid.builds
                                                 : preconditioner->velocity_builds;
   }
+  /** Whether the system matrix is assembled: for the assembled operator, the AMG on
+   * its velocity block, or the operator check; the matrix-free operator with the
+   * p-multigrid needs only the rhs and L_c. */
+  bool assembled_matrix_needed () const
+  {
+    return !parameters.linear_solver.p_multigrid ||
+           parameters.linear_solver.check_operator;
+  }
   /** The operator FGMRES applies (`linear solver/operator`). */
   const FlowOperator &krylov_operator () const;
   /** The largest relative difference between the matrix-free and the assembled
@@ -123,5 +131,8 @@ private:
   // unconstrained rows of the cells that hold them in the last assembly
   std::array<dealii::IndexSet, 3> boundary_velocity_dofs;
   std::vector<BoundaryCellSystem> boundary_cell_systems;
+  // without the assembled matrix: each boundary's owned velocity rows (block-0
+  // position) and weights, applied matrix-free
+  std::array<std::vector<std::pair<unsigned int, double>>, 3> reaction_weights;
 };
 } // namespace wetbed

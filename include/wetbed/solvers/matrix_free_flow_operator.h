@@ -13,6 +13,7 @@
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/matrix_free/matrix_free.h>
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <vector>
@@ -113,6 +114,13 @@ public:
     return constrained_diagonal[b];
   }
 
+  /** sum_i w_i (K x)_i over the (block-0 position, weight) lists of three boundaries,
+   * K the unconstrained velocity rows (cell and face integrals without any constraint),
+   * x = `solution` (ghosted, constraints distributed); this rank's part. */
+  std::array<double, 3> weighted_row_sums (
+      const BlockVector                                                 &solution,
+      const std::array<std::vector<std::pair<unsigned int, double>>, 3> &weights) const;
+
   /** Bytes held: MatrixFree, the coefficients, the maps and work vectors. */
   std::size_t memory_consumption () const;
 
@@ -130,15 +138,18 @@ private:
     dealii::Tensor<1, dim, VA> wall_normal;
   };
 
-  // the integrals; a null pointer leaves that block out (no input or no output)
+  // the integrals; a null pointer leaves that block out (no input or no output);
+  // first_dof 0: with the constraints, 2: without
   void apply_cells (LocalVector       *dst_u,
                     LocalVector       *dst_p,
                     const LocalVector *src_u,
-                    const LocalVector *src_p) const;
+                    const LocalVector *src_p,
+                    unsigned int       first_dof = 0) const;
   void apply_boundary_faces (LocalVector       *dst_u,
                              LocalVector       *dst_p,
                              const LocalVector *src_u,
-                             const LocalVector *src_p) const;
+                             const LocalVector *src_p,
+                             unsigned int       first_dof = 0) const;
   void build_maps (const dealii::DoFHandler<dim>           &flow_dof_handler,
                    const std::vector<dealii::IndexSet>     &owned,
                    const dealii::AffineConstraints<double> &flow_constraints);
@@ -148,6 +159,7 @@ private:
   dealii::FE_Q<dim>                   pressure_fe;
   dealii::DoFHandler<dim>             velocity_dof_handler, pressure_dof_handler;
   dealii::AffineConstraints<double>   velocity_constraints, pressure_constraints;
+  dealii::AffineConstraints<double>   unconstrained; // (none: the boundary reactions)
   dealii::MatrixFree<dim, double, VA> matrix_free;
   bool                                pressure_coupling = false;
   std::vector<CellData>               cell_data; // [batch * n_q + q]
@@ -160,6 +172,6 @@ private:
   std::array<std::vector<dealii::types::global_dof_index>, 2> constrained_global;
   std::array<std::vector<double>, 2>                          constrained_diagonal;
   std::vector<unsigned int> velocity_constrained_local; // owned, MatrixFree layout
-  mutable LocalVector       src_u, src_p, dst_u, dst_p;
+  mutable LocalVector       src_u, src_p, dst_u, dst_p, plain_u, plain_p, plain_result;
 };
 } // namespace wetbed

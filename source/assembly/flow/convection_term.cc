@@ -44,6 +44,8 @@ void ConvectionTerm<dim>::cell (const FlowCellScratch<dim>   &s,
                                 const FlowAssemblyState<dim> &state,
                                 FlowCellCopy                 &copy) const
 {
+  if (!copy.with_matrix)
+    return;
   const unsigned int  n_u = s.indices.n_velocity_basis;
   std::vector<double> advective (n_u);
   for (unsigned int q = 0; q < s.JxW.size (); ++q)

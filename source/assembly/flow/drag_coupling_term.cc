@@ -7,6 +7,8 @@ void DragCouplingTerm<dim>::cell (const FlowCellScratch<dim> &s,
                                   const FlowAssemblyState<dim> &,
                                   FlowCellCopy &copy) const
 {
+  if (!copy.with_matrix)
+    return;
   const unsigned int n_u = s.indices.n_velocity_basis;
   for (unsigned int q = 0; q < s.JxW.size (); ++q)
   {

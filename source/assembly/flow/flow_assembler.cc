@@ -3,6 +3,7 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/work_stream.h>
 #include <deal.II/grid/filtered_iterator.h>
+#include <deal.II/lac/affine_constraints.templates.h> // the (rhs, matrix) distribution for block vectors
 
 namespace wetbed
 {
@@ -216,7 +217,8 @@ template <int dim>
 void FlowAssembler<dim>::capture_boundary_rows (
     const FlowCellCopy              &copy,
     const std::vector<unsigned int> &component,
-    const BoundaryRowCapture        &capture)
+    const BoundaryRowCapture        &capture,
+    const bool                       rows)
 {
   const unsigned int n_dofs = copy.dofs.size ();
   BoundaryCellSystem system{copy.dofs, {}, {{0, 0, 0}}};
@@ -228,9 +230,12 @@ void FlowAssembler<dim>::capture_boundary_rows (
         const double weight = capture.up[component[i] % dim];
         if (weight != 0)
         {
-          system.row[b].resize (n_dofs, 0.0);
-          for (unsigned int j = 0; j < n_dofs; ++j)
-            system.row[b][j] += weight * copy.matrix (i, j);
+          if (rows)
+          {
+            system.row[b].resize (n_dofs, 0.0);
+            for (unsigned int j = 0; j < n_dofs; ++j)
+              system.row[b][j] += weight * copy.matrix (i, j);
+          }
           system.rhs[b] += weight * copy.rhs (i);
           any = true;
         }
@@ -246,11 +251,13 @@ void FlowAssembler<dim>::assemble (const FlowAssemblyState<dim>    &state,
                                    const AffineConstraints<double> &schur_constraints,
                                    AssembledFlowOperator           &flow_operator,
                                    BlockVector                     &rhs,
-                                   const BoundaryRowCapture        &capture) const
+                                   const BoundaryRowCapture        &capture,
+                                   const bool                       matrix) const
 {
-  flow_operator.system = 0;
-  flow_operator.schur  = 0;
-  rhs                  = 0;
+  if (matrix)
+    flow_operator.system = 0;
+  flow_operator.schur = 0;
+  rhs                 = 0;
   capture.systems->clear ();
   const auto &fe = dynamic_cast<const FESystem<dim> &> (flow_dof_handler.get_fe ());
   const FlowCellScratch<dim> scratch (
@@ -263,19 +270,35 @@ void FlowAssembler<dim>::assemble (const FlowAssemblyState<dim>    &state,
       Filtered (IteratorFilters::LocallyOwnedCell (), flow_dof_handler.begin_active ()),
       Filtered (IteratorFilters::LocallyOwnedCell (), flow_dof_handler.end ()),
       [&] (const Filtered &cell, FlowCellScratch<dim> &s, FlowCellCopy &c)
-      { local_system (cell, state, s, c); },
+      {
+        c.with_matrix = matrix;
+        if (!matrix)
+        {
+          cell->get_dof_indices (c.dofs);
+          for (const auto dof : c.dofs)
+            c.with_matrix =
+                c.with_matrix || flow_constraints.is_inhomogeneously_constrained (dof);
+        }
+        local_system (cell, state, s, c);
+      },
       [&] (const FlowCellCopy &c)
       {
         if (c.captured)
-          capture_boundary_rows (c, component, capture);
-        flow_constraints.distribute_local_to_global (
-            c.matrix, c.rhs, c.dofs, flow_operator.system, rhs);
+          capture_boundary_rows (c, component, capture, matrix);
+        if (matrix)
+          flow_constraints.distribute_local_to_global (
+              c.matrix, c.rhs, c.dofs, flow_operator.system, rhs);
+        else if (c.with_matrix)
+          flow_constraints.distribute_local_to_global (c.rhs, c.dofs, rhs, c.matrix);
+        else
+          flow_constraints.distribute_local_to_global (c.rhs, c.dofs, rhs);
         schur_constraints.distribute_local_to_global (
             c.schur, c.dofs, flow_operator.schur);
       },
       scratch,
       copy);
-  flow_operator.system.compress (VectorOperation::add);
+  if (matrix)
+    flow_operator.system.compress (VectorOperation::add);
   flow_operator.schur.compress (VectorOperation::add);
   rhs.compress (VectorOperation::add);
 }

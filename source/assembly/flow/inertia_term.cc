@@ -66,8 +66,9 @@ void InertiaTerm<dim>::cell (const FlowCellScratch<dim>   &s,
         {
           const double phi_a = s.phi[q][a] * w;
           copy.rhs (rows[a]) += force[d] * phi_a;
-          for (unsigned int b = 0; b < n_u; ++b)
-            copy.matrix (rows[a], rows[b]) += m * phi_a * s.phi[q][b];
+          if (copy.with_matrix)
+            for (unsigned int b = 0; b < n_u; ++b)
+              copy.matrix (rows[a], rows[b]) += m * phi_a * s.phi[q][b];
         }
       }
     }

@@ -83,7 +83,7 @@ void NitscheWallTerm<dim>::face (const typename FlowTerm<dim>::CellIterator &cel
                                 nitsche,
                                 gamma,
                                 s.h,
-                                copy.matrix,
+                                copy.with_matrix ? &copy.matrix : nullptr,
                                 copy.rhs);
   }
 }

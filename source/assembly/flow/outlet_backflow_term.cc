@@ -9,6 +9,8 @@ void OutletBackflowTerm<dim>::face (const typename FlowTerm<dim>::CellIterator &
                                     const FlowAssemblyState<dim> &,
                                     FlowCellCopy &copy) const
 {
+  if (!copy.with_matrix)
+    return;
   const auto        &fv    = s.face_values;
   const unsigned int n_u   = s.indices.n_velocity_basis;
   const auto        &first = s.indices.velocity[0];

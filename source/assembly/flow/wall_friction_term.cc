@@ -50,7 +50,7 @@ void WallFrictionTerm<dim>::face (const typename FlowTerm<dim>::CellIterator &ce
         {
           const double phi_a = fv.shape_value (first[a], q) * w;
           copy.rhs (rows[a]) += wall_motion[d] * phi_a;
-          for (unsigned int e = 0; e < dim; ++e)
+          for (unsigned int e = 0; e < dim && copy.with_matrix; ++e)
           {
             // C (P_t u).(P_t v) with P_t = I - n n
             const double projector = (d == e ? 1.0 : 0.0) - n[d] * n[e];

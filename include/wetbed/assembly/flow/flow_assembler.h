@@ -44,12 +44,17 @@ public:
     std::vector<BoundaryCellSystem>       *systems;
   };
 
+  /** The system (with `matrix`; without it only the rhs and L_c: the matrix-free
+   * operator applies the system, and the cells with inhomogeneous constraints build
+   * their local matrix only to carry the constraints into the rhs; the capture then
+   * keeps only the rhs part of the boundary rows). */
   void assemble (const FlowAssemblyState<dim>            &state,
                  const dealii::AffineConstraints<double> &flow_constraints,
                  const dealii::AffineConstraints<double> &schur_constraints,
                  AssembledFlowOperator                   &flow_operator,
                  BlockVector                             &rhs,
-                 const BoundaryRowCapture                &capture) const;
+                 const BoundaryRowCapture                &capture,
+                 bool                                     matrix = true) const;
 
   using CellIterator = typename dealii::DoFHandler<dim>::active_cell_iterator;
 
@@ -80,17 +85,19 @@ private:
                      const FlowAssemblyState<dim> &state,
                      FlowCellScratch<dim>         &scratch) const;
   /** The fields at the points of one boundary face. */
-  void        prepare_face (const CellIterator           &cell,
-                            unsigned int                  face,
-                            const FlowAssemblyState<dim> &state,
-                            FlowCellScratch<dim>         &scratch) const;
-  void        local_system (const CellIterator           &cell,
-                            const FlowAssemblyState<dim> &state,
-                            FlowCellScratch<dim>         &scratch,
-                            FlowCellCopy                 &copy) const;
+  void prepare_face (const CellIterator           &cell,
+                     unsigned int                  face,
+                     const FlowAssemblyState<dim> &state,
+                     FlowCellScratch<dim>         &scratch) const;
+  void local_system (const CellIterator           &cell,
+                     const FlowAssemblyState<dim> &state,
+                     FlowCellScratch<dim>         &scratch,
+                     FlowCellCopy                 &copy) const;
+  /** The weighted boundary rows of a cell (with `rows`; else only their rhs part). */
   static void capture_boundary_rows (const FlowCellCopy              &copy,
                                      const std::vector<unsigned int> &component,
-                                     const BoundaryRowCapture        &capture);
+                                     const BoundaryRowCapture        &capture,
+                                     bool                             rows);
 
   const dealii::Mapping<dim>                 &mapping;
   const dealii::DoFHandler<dim>              &flow_dof_handler, &alpha_dof_handler;

@@ -120,7 +120,9 @@ struct FlowCellCopy
 {
   explicit FlowCellCopy (unsigned int n_dofs);
 
-  dealii::FullMatrix<double>                   matrix, schur;
+  dealii::FullMatrix<double> matrix, schur;
+  // false: the terms add only to the rhs (and L_c), not to `matrix`
+  bool                                         with_matrix = true;
   dealii::Vector<double>                       rhs;
   std::vector<dealii::types::global_dof_index> dofs;
   bool                                         owned = false;
