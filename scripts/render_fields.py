@@ -7,7 +7,8 @@ usage: scripts/render_fields.py RUN_FOLDER [--field NAME] [--times T,T,...] [--c
 
 Reads the run's own field output: fields.xdmf with its fields_NNN.h5 files
 (`output/field format = hdf5` or `vtu and hdf5`) or, without them, the fields_NNN.pvtu
-records and their .vtu pieces (the default `vtu`), and writes into OUT (default
+records and their .vtu pieces (the default `vtu`; their times are the output number
+times `output/field interval`, the XDMF's are exact), and writes into OUT (default
 RUN_FOLDER/pictures):
   <field>_t<time>.png   one snapshot per chosen time (--times, else --count times spread
                         evenly over the run, first and last output included; default 4)
@@ -322,10 +323,15 @@ def iso_figure(frame, view, field, level, size):
     ax.set_xlim(lo[0], hi[0])
     ax.set_ylim(lo[1], hi[1])
     ax.set_zlim(lo[2], hi[2])
-    ax.set_box_aspect(np.maximum(hi - lo, 1e-12))
-    ax.set_xlabel("x", fontsize=7)
-    ax.set_ylabel("y", fontsize=7)
-    ax.set_zlabel("z", fontsize=7)
+    # a tall column drawn at most 3 times as tall as wide (the vertical axis compressed)
+    extent = np.maximum(hi - lo, 1e-12)
+    extent[view.vertical] = min(extent[view.vertical], 3 * max(np.delete(extent, view.vertical)))
+    ax.set_box_aspect(extent)
+    fig.subplots_adjust(left=0, right=1, bottom=0, top=0.95)
+    for d, axis in enumerate((ax.xaxis, ax.yaxis, ax.zaxis)):
+        axis.set_label_text(f"{view.names[d]} (m)", fontsize=7)
+        if d != view.vertical:
+            axis.set_ticklabels([])
     ax.tick_params(labelsize=6)
     ax.set_title(f"{field} = {level} at t = {frame.time:.3f} s ({len(triangles)} triangles)", fontsize=8)
     return fig
@@ -382,16 +388,25 @@ def main():
         plt.close(fig)
         written.append(path)
     if len(chosen) > 1:
+        # side by side for a tall domain, one above the other for a wide one
         dpi = 100
-        panel = (size[0] * 0.55, size[1])
-        fig, axes = plt.subplots(1, len(chosen), figsize=(panel[0] * len(chosen) / dpi, panel[1] / dpi), dpi=dpi,
-                                 squeeze=False)
-        for ax, i in zip(axes[0], chosen):
+        aspect = (view.extent[1] - view.extent[0]) / max(view.extent[3] - view.extent[2], 1e-30)
+        tall = aspect <= 1.5
+        if tall:
+            panel = (max(60.0, 0.8 * size[1] * aspect) + 30, size[1])
+            shape = (1, len(chosen))
+        else:
+            panel = (size[0], max(60.0, 0.8 * size[0] / aspect) + 30)
+            shape = (len(chosen), 1)
+        fig, axes = plt.subplots(*shape, figsize=(panel[0] * shape[1] / dpi + 1.2, panel[1] * shape[0] / dpi),
+                                 dpi=dpi, squeeze=False)
+        fig.subplots_adjust(left=0.04, right=0.82, bottom=0.03, top=0.95, wspace=0.1, hspace=0.4)
+        for ax, i in zip(axes.ravel(), chosen):
             mesh = draw_field(ax, loaded[i], view, args.field, vmax, "viridis")
             ax.set_title(f"t = {frames[i][0]:.2f} s", fontsize=9)
             ax.set_xticks([])
-            ax.tick_params(labelsize=7)
-        fig.colorbar(mesh, ax=list(axes[0]), label=args.field, shrink=0.8)
+            ax.set_yticks([])
+        fig.colorbar(mesh, cax=fig.add_axes([0.86, 0.1, 0.03, 0.8]), label=args.field)
         path = os.path.join(out, f"{args.field}_snapshots.png")
         fig.savefig(path, dpi=dpi)
         plt.close(fig)
