@@ -251,8 +251,8 @@ def snapshot_figure(frame, view, field, vmax, size, title=True):
 
     dpi = 100
     fig = plt.figure(figsize=(size[0] / dpi, size[1] / dpi), dpi=dpi)
-    ax = fig.add_axes([0.18, 0.06, 0.52, 0.88 if title else 0.92])
-    bar = fig.add_axes([0.78, 0.06, 0.05, 0.88 if title else 0.92])
+    ax = fig.add_axes([0.2, 0.06, 0.46, 0.88 if title else 0.92])
+    bar = fig.add_axes([0.7, 0.06, 0.05, 0.88 if title else 0.92])
     mesh = draw_field(ax, frame, view, field, vmax, "viridis")
     fig.colorbar(mesh, cax=bar, label=field)
     ax.set_xlabel(f"{view.names[view.horizontal]} (m)", fontsize=8)
