@@ -28,6 +28,7 @@ parser.add_argument("--ranks", type=int, default=2)
 parser.add_argument("--levels", type=int, nargs="+", default=[0, 1])
 parser.add_argument("--paths", nargs="+", default=["assembled", "matrix-free", "p-multigrid"])
 parser.add_argument("--no-doc", action="store_true")
+parser.add_argument("--replot", action="store_true", help="tabulate the cached results.json (same arguments)")
 args = parser.parse_args()
 
 settings = {
@@ -39,8 +40,8 @@ work = os.path.join(root, "build", "benchmarks", "cost_3d")
 os.makedirs(work, exist_ok=True)
 env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
 base = read_case("column_3d")
-results = []
-for level in args.levels:
+results = json.load(open(os.path.join(work, "results.json"))) if args.replot else []
+for level in ([] if args.replot else args.levels):
     span = args.end_time_level_1 if (level >= 1 and args.end_time_level_1) else args.end_time
     for path in args.paths:
         name = f"level_{level}_{path}"
@@ -71,13 +72,14 @@ for level in args.levels:
         print(f"{name}: {cells} cells, {r['dofs']} flow DoFs, {r['steps']} steps ({r['rejected']} rejected), "
               f"wall {r['wall']:.1f} s, {r['per_second']:.0f} s per simulated s, {r['per_dof']:.1f} us/DoF/step, "
               f"FGMRES {per_solve:.1f} per solve, peak {r['memory']:.0f} MB/rank", flush=True)
-json.dump(results, open(os.path.join(work, "results.json"), "w"), indent=1)
+if not args.replot:
+    json.dump(results, open(os.path.join(work, "results.json"), "w"), indent=1)
 
 names = ["flow assembly", "matrix-free coefficients", "preconditioner setup", "Krylov solve", "alpha transport",
          "solids pressure correction"]
 lines = [f"Command: `python3 benchmarks/cost_3d.py --end-time {args.end_time}"
          + (f" --end-time-level-1 {args.end_time_level_1}" if args.end_time_level_1 else "")
-         + f" --ranks {args.ranks} --levels {' '.join(map(str, args.levels))}` "
+         + f" --ranks {args.ranks} --levels {' '.join(map(str, args.levels))} --paths {' '.join(args.paths)}` "
          f"(`prm/column_3d.prm`, {args.ranks} MPI ranks on this 2-core machine, the paths run one after another "
          "in one invocation).", "",
          "| refinement | cells | flow DoFs | path | simulated s | steps (rejected) | wall s | s per simulated s | "
@@ -90,6 +92,13 @@ for r in results:
     lines.append(f"| {r['level']} | {r['cells']} | {r['dofs']} | {r['path']} | {r['span']:g} | {r['steps']} ({r['rejected']}) | "
                  f"{r['wall']:.1f} | {r['per_second']:.0f} | {ratio} | {r['per_dof']:.1f} | {r['per_solve']:.1f} | "
                  f"{r['memory']:.0f} | " + " | ".join(f"{r['sections'].get(n, 0):.1f}" for n in names) + " |")
+levels = sorted({r["level"] for r in results})
+for path in args.paths:
+    runs = [next((r for r in results if r["level"] == l and r["path"] == path), None) for l in levels]
+    if len(levels) >= 2 and all(runs):
+        lines.append("")
+        lines.append(f"FGMRES iterations per solve, {path}: " + " → ".join(f"{r['per_solve']:.1f}" for r in runs)
+                     + f" over {len(levels) - 1} refinement(s) ({100 * (runs[-1]['per_solve'] / runs[0]['per_solve'] - 1):+.0f}%).")
 for line in lines:
     print(line)
 if not args.no_doc:
