@@ -41,18 +41,19 @@ void VelocityMultigrid<dim>::reinit (const Mapping<dim>                &mapping_
   }
   transfer.reinit_polynomial_transfer (
       fine, coarse_dofs, op->velocity_dof_constraints (), coarse_constraints);
-  op->initialize_velocity_vector (diagonal);
-  op->initialize_velocity_vector (coupling);
+  entries.resize (2 * dim);
+  for (auto &v : entries)
+    op->initialize_velocity_vector (v);
   op->initialize_velocity_vector (residual);
   coarse_residual.reinit (coarse_owned, relevant, comm);
   coarse_solution.reinit (coarse_owned, relevant, comm);
   coarse_rhs_t.reinit (coarse_owned, comm);
   coarse_solution_t.reinit (coarse_owned, comm);
 
-  // the (gas, solids) pairs of each owned Q2 node and direction
-  jacobi->pairs.clear ();
+  // the 2 dim velocity DoFs (gas and solids components) of each owned Q2 node
+  jacobi->nodes.clear ();
   jacobi->singles.clear ();
-  const auto                          &partitioner = *diagonal.get_partitioner ();
+  const auto                          &partitioner = *entries[0].get_partitioner ();
   const IndexSet                       owned       = fine.locally_owned_dofs ();
   std::vector<bool>                    seen (partitioner.locally_owned_size (), false);
   const FESystem<dim>                 &fe = op->velocity_element ();
@@ -61,25 +62,27 @@ void VelocityMultigrid<dim>::reinit (const Mapping<dim>                &mapping_
     if (cell->is_locally_owned ())
     {
       cell->get_dof_indices (indices);
-      for (unsigned int d = 0; d < dim; ++d)
-        for (unsigned int a = 0; a < fine_scalar.n_dofs_per_cell (); ++a)
+      for (unsigned int a = 0; a < fine_scalar.n_dofs_per_cell (); ++a)
+      {
+        std::array<unsigned int, 2 * dim> node;
+        bool                              all_owned = true;
+        for (unsigned int c = 0; c < 2 * dim; ++c)
         {
-          const auto g = indices[fe.component_to_system_index (d, a)];
-          const auto s = indices[fe.component_to_system_index (dim + d, a)];
-          if (!owned.is_element (g) || !owned.is_element (s))
-            continue;
-          const unsigned int lg = partitioner.global_to_local (g),
-                             ls = partitioner.global_to_local (s);
-          if (seen[lg])
-            continue;
-          seen[lg] = seen[ls] = true;
-          jacobi->pairs.push_back ({{lg, ls}});
+          const auto global = indices[fe.component_to_system_index (c, a)];
+          all_owned         = all_owned && owned.is_element (global);
+          node[c]           = all_owned ? partitioner.global_to_local (global) : 0;
         }
+        if (!all_owned || seen[node[0]])
+          continue;
+        for (const unsigned int i : node)
+          seen[i] = true;
+        jacobi->nodes.push_back (node);
+      }
     }
   for (unsigned int i = 0; i < seen.size (); ++i)
     if (!seen[i])
       jacobi->singles.push_back (i);
-  jacobi->inverse.assign (jacobi->pairs.size (), {{1, 0, 0, 1}});
+  jacobi->inverse.assign (jacobi->nodes.size () * 4 * dim * dim, 0.0);
 
   const QGauss<dim>     quadrature (3);
   const QGauss<dim - 1> face_quadrature (3);
@@ -134,8 +137,11 @@ template <int dim>
 void VelocityMultigrid<dim>::begin_update ()
 {
   coarse_matrix = 0;
-  diagonal      = 0;
-  coupling      = 0;
+  for (auto &v : entries)
+  {
+    v = 0;
+    v.zero_out_ghost_values ();
+  }
 }
 
 template <int dim>
@@ -247,9 +253,13 @@ void VelocityMultigrid<dim>::add_fine_diagonal (
     const std::vector<FlowPointCoefficients<dim>>                    &values,
     const std::vector<typename FlowAssembler<dim>::FaceCoefficients> &faces)
 {
-  const unsigned int n2 = fine_scalar.n_dofs_per_cell (), n = 2 * dim * n2;
-  Vector<double>     local_diagonal (n), local_coupling (n);
-  auto               at = [n2] (unsigned int c, unsigned int a) { return c * n2 + a; };
+  // local[o](c, a) = A((c, a), ((c + o) mod 2 dim, a)): the node blocks of this cell
+  const unsigned int          n2 = fine_scalar.n_dofs_per_cell (), n = 2 * dim * n2;
+  std::vector<Vector<double>> local (2 * dim, Vector<double> (n));
+  auto at = [n2] (unsigned int c, unsigned int a) { return c * n2 + a; };
+  auto add_entry =
+      [&] (unsigned int row, unsigned int column, unsigned int a, double value)
+  { local[(column + 2 * dim - row) % (2 * dim)](at (row, a)) += value; };
   for (unsigned int q = 0; q < s.JxW.size (); ++q)
   {
     const FlowPointCoefficients<dim> &c = values[q];
@@ -265,11 +275,17 @@ void VelocityMultigrid<dim>::add_fine_diagonal (
             (c.mass[k] + c.drag) * phi * phi + c.inertia[k] * phi * advective +
             c.supg[k] * advective * advective + c.viscosity[k] * (grad * grad);
         for (unsigned int d = 0; d < dim; ++d)
-          local_diagonal (at (k * dim + d, a)) +=
-              (base + (c.viscosity[k] + c.bulk[k]) * grad[d] * grad[d]) * w;
+        {
+          add_entry (k * dim + d, (1 - k) * dim + d, a, -c.drag * phi * phi * w);
+          for (unsigned int e = 0; e < dim; ++e)
+            add_entry (k * dim + d,
+                       k * dim + e,
+                       a,
+                       ((d == e ? base : 0.0) +
+                        (c.viscosity[k] + c.bulk[k]) * grad[d] * grad[e]) *
+                           w);
+        }
       }
-      for (unsigned int d = 0; d < dim; ++d)
-        local_coupling (at (d, a)) -= c.drag * phi * phi * w;
     }
   }
   const typename Triangulation<dim>::cell_iterator tria_cell (cell);
@@ -290,19 +306,23 @@ void VelocityMultigrid<dim>::add_fine_diagonal (
         const Tensor<1, dim> &grad = ff.shape_grad (a, q);
         for (unsigned int k = 0; k < 2; ++k)
           for (unsigned int d = 0; d < dim; ++d)
-          {
-            double value = c.friction[k] * (1 - n_h[d] * n_h[d]) * phi * phi;
-            if (k == 0)
-              value += c.backflow * phi * phi;
-            if (c.slips[k])
+            for (unsigned int e = 0; e < dim; ++e)
             {
-              const double stress =
-                  2 * c.viscosity[k] * nw[d] * (grad * nw) + c.bulk[k] * grad[d];
-              value +=
-                  -2 * stress * phi * nw[d] + c.penalty[k] * phi * phi * nw[d] * nw[d];
+              double value =
+                  c.friction[k] * ((d == e ? 1.0 : 0.0) - n_h[d] * n_h[e]) * phi * phi;
+              if (k == 0 && d == e)
+                value += c.backflow * phi * phi;
+              if (c.slips[k])
+              {
+                const double stress_d =
+                    2 * c.viscosity[k] * nw[d] * (grad * nw) + c.bulk[k] * grad[d];
+                const double stress_e =
+                    2 * c.viscosity[k] * nw[e] * (grad * nw) + c.bulk[k] * grad[e];
+                value += -stress_e * phi * nw[d] - stress_d * phi * nw[e] +
+                         c.penalty[k] * phi * phi * nw[d] * nw[e];
+              }
+              add_entry (k * dim + d, k * dim + e, a, value * ff.JxW (q));
             }
-            local_diagonal (at (k * dim + d, a)) += value * ff.JxW (q);
-          }
       }
     }
   }
@@ -314,49 +334,56 @@ void VelocityMultigrid<dim>::add_fine_diagonal (
   for (unsigned int c = 0; c < 2 * dim; ++c)
     for (unsigned int a = 0; a < n2; ++a)
       dofs[at (c, a)] = system[fe.component_to_system_index (c, a)];
-  // a constrained entry adds w^2 times its diagonal to each master (the diagonal of
-  // C^T A C where C has one entry per row; cross terms left out): w, not w^2, would make
-  // the masters of a no-normal-flux constraint (w = -n_x/n_y < 0) lose diagonal
+  // entries between unconstrained DoFs as they are; a constrained DoF adds w^2 times
+  // its diagonal to each master's diagonal (the diagonal of C^T A C with one entry per
+  // row, cross terms left out): w, not w^2, would make the masters of a no-normal-flux
+  // constraint (w = -n_x/n_y < 0) lose diagonal
   const AffineConstraints<double> &constraints = op->velocity_dof_constraints ();
-  for (unsigned int i = 0; i < n; ++i)
-  {
-    const auto *entries = constraints.get_constraint_entries (dofs[i]);
-    if (!constraints.is_constrained (dofs[i]))
+  for (unsigned int c = 0; c < 2 * dim; ++c)
+    for (unsigned int a = 0; a < n2; ++a)
     {
-      diagonal (dofs[i]) += local_diagonal (i);
-      coupling (dofs[i]) += local_coupling (i);
+      const unsigned int i = at (c, a);
+      if (constraints.is_constrained (dofs[i]))
+      {
+        if (const auto *masters = constraints.get_constraint_entries (dofs[i]))
+          for (const auto &[master, weight] : *masters)
+            entries[0](master) += weight * weight * local[0](i);
+        continue;
+      }
+      for (unsigned int o = 0; o < 2 * dim; ++o)
+        if (o == 0 || !constraints.is_constrained (dofs[at ((c + o) % (2 * dim), a)]))
+          entries[o](dofs[i]) += local[o](i);
     }
-    else if (entries != nullptr)
-      for (const auto &[master, weight] : *entries)
-        diagonal (master) += weight * weight * local_diagonal (i);
-  }
 }
 
 template <int dim>
 void VelocityMultigrid<dim>::end_update ()
 {
   coarse_matrix.compress (VectorOperation::add);
-  diagonal.compress (VectorOperation::add);
-  coupling.compress (VectorOperation::add);
-  const auto &constraints = op->velocity_dof_constraints ();
-  const auto &partitioner = *diagonal.get_partitioner ();
-  auto        constrained = [&] (const unsigned int local)
-  { return constraints.is_constrained (partitioner.local_to_global (local)); };
-  for (unsigned int p = 0; p < jacobi->pairs.size (); ++p)
+  for (auto &v : entries)
+    v.compress (VectorOperation::add);
+  const auto            &constraints = op->velocity_dof_constraints ();
+  const auto            &partitioner = *entries[0].get_partitioner ();
+  constexpr unsigned int m           = 2 * dim;
+  FullMatrix<double>     block (m, m), inverse (m, m);
+  for (unsigned int p = 0; p < jacobi->nodes.size (); ++p)
   {
-    const auto [g, s] = jacobi->pairs[p];
-    double a = diagonal.local_element (g), b = diagonal.local_element (s),
-           c = coupling.local_element (g);
-    if (constrained (g) || constrained (s))
-    {
-      c = 0;
-      a = constrained (g) ? 1.0 : a;
-      b = constrained (s) ? 1.0 : b;
-    }
-    const double det = a * b - c * c;
-    AssertThrow (std::isfinite (det) && det != 0,
-                 ExcMessage ("velocity multigrid: a singular node block"));
-    jacobi->inverse[p] = {{b / det, -c / det, -c / det, a / det}};
+    const auto         &node = jacobi->nodes[p];
+    std::array<bool, m> fixed;
+    for (unsigned int c = 0; c < m; ++c)
+      fixed[c] = constraints.is_constrained (partitioner.local_to_global (node[c]));
+    for (unsigned int c = 0; c < m; ++c)
+      for (unsigned int o = 0; o < m; ++o)
+      {
+        const unsigned int column = (c + o) % m;
+        block (c, column)         = (fixed[c] || fixed[column])
+                                        ? (c == column ? 1.0 : 0.0)
+                                        : entries[o].local_element (node[c]);
+      }
+    inverse.invert (block);
+    for (unsigned int c = 0; c < m; ++c)
+      for (unsigned int d = 0; d < m; ++d)
+        jacobi->inverse[p * m * m + c * m + d] = inverse (c, d);
   }
 }
 
@@ -364,13 +391,21 @@ template <int dim>
 void VelocityMultigrid<dim>::NodeBlockJacobi::vmult (LocalVector       &dst,
                                                      const LocalVector &src) const
 {
-  for (unsigned int p = 0; p < pairs.size (); ++p)
+  constexpr unsigned int m = 2 * dim;
+  for (unsigned int p = 0; p < nodes.size (); ++p)
   {
-    const auto [g, s] = pairs[p];
-    const double x = src.local_element (g), y = src.local_element (s);
-    const auto  &m        = inverse[p];
-    dst.local_element (g) = m[0] * x + m[1] * y;
-    dst.local_element (s) = m[2] * x + m[3] * y;
+    const auto &node = nodes[p];
+    double      x[m];
+    for (unsigned int c = 0; c < m; ++c)
+      x[c] = src.local_element (node[c]);
+    const double *row = &inverse[p * m * m];
+    for (unsigned int c = 0; c < m; ++c, row += m)
+    {
+      double y = 0;
+      for (unsigned int d = 0; d < m; ++d)
+        y += row[d] * x[d];
+      dst.local_element (node[c]) = y;
+    }
   }
   for (const unsigned int i : singles)
     dst.local_element (i) = src.local_element (i);

@@ -23,9 +23,9 @@ namespace wetbed
 /**
  * One two-level V-cycle on the velocity block A of the matrix-free flow operator that
  * never assembles A (doc/theory.md, "Velocity p-multigrid"): Chebyshev smoothing on
- * the matrix-free Q2 operator, preconditioned by node-block Jacobi (at each Q2 node
- * and direction the 2x2 block of the gas and solids components, which the drag
- * couples, inverted exactly), and a coarse correction on the Q1 velocity space
+ * the matrix-free Q2 operator, preconditioned by node-block Jacobi (at each Q2 node the
+ * 2 dim x 2 dim block of both phases' velocity components inverted exactly), and a
+ * coarse correction on the Q1 velocity space
  * (polynomial transfer, deal.II MGTwoLevelTransfer) by one ML V-cycle on the Q1 matrix
  * of the same bilinear form, assembled from the same quadrature-point coefficients.
  */
@@ -75,12 +75,14 @@ private:
       op->initialize_velocity_vector (v);
     }
   };
-  /** The inverse 2x2 gas-solids blocks of each Q2 node and direction. */
+  /** The inverse (2 dim) x (2 dim) blocks of each Q2 node: all velocity components
+   * of both phases at the node, which the drag (gas-solids), the viscous stress and
+   * the Nitsche penalty n n^T (between directions) couple. */
   struct NodeBlockJacobi
   {
-    std::vector<std::array<unsigned int, 2>> pairs; // local indices (gas, solids)
-    std::vector<std::array<double, 4>>       inverse;
-    std::vector<unsigned int>                singles; // constrained or unpaired: identity
+    std::vector<std::array<unsigned int, 2 * dim>> nodes;   // local indices
+    std::vector<double>                            inverse; // row-major per node
+    std::vector<unsigned int>                      singles; // unpaired: identity
     void vmult (LocalVector &dst, const LocalVector &src) const;
   };
   using Smoother =
@@ -111,8 +113,9 @@ private:
   std::shared_ptr<NodeBlockJacobi>             jacobi;
   VelocityBlock                                block;
   Smoother                                     smoother;
-  // the Q2 diagonal entries and the gas-solids coupling (at the gas DoF)
-  LocalVector diagonal, coupling;
+  // the node blocks of the Q2 operator: entries[o](c, a) = A((c, a), ((c + o) mod
+  // 2 dim, a)) at the DoF of component c and basis function a
+  std::vector<LocalVector> entries;
   // work
   std::unique_ptr<dealii::FEValues<dim>>     coarse_values;
   std::unique_ptr<dealii::FEFaceValues<dim>> coarse_face_values, fine_face_values;
