@@ -431,6 +431,7 @@ void TwoFluidSolver<dim>::resume_from_checkpoint ()
                    Utilities::MPI::this_mpi_process (communicator) == 0,
                    state.monitors_bytes,
                    monitor_columns ());
+  update_wave_speeds ();
   monitors.restore (evaluate_monitors (this->state ()));
   bubble_analysis->restore_state (state.bubble_state, output);
   resumed = true;

@@ -46,7 +46,8 @@ SolverState<dim> TwoFluidSolver<dim>::state () const
                           last_krylov_iterations,
                           initial_solids_mass,
                           correction_momentum,
-                          granular_energy.budget ()};
+                          granular_energy.budget (),
+                          wave_speeds};
 }
 
 template <int dim>

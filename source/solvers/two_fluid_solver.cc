@@ -138,6 +138,7 @@ void TwoFluidSolver<dim>::initialize ()
                    Utilities::MPI::this_mpi_process (communicator) == 0,
                    monitor_columns ());
     bubble_analysis->open (folder);
+    update_wave_speeds ();
   }
   if (parameters.checkpoint.on_signal)
     catch_stop_signals ();
@@ -470,12 +471,17 @@ bool TwoFluidSolver<dim>::try_time_step (const double dt, const unsigned int bdf
 }
 
 template <int dim>
+void TwoFluidSolver<dim>::update_wave_speeds ()
+{
+  wave_speeds = evaluate_wave_speeds (state ());
+}
+
+template <int dim>
 double TwoFluidSolver<dim>::next_time_step (const double dt) const
 {
   if (!parameters.time.adaptive)
     return dt;
-  return time_step_controller.next (
-      dt, evaluate_wave_speeds (state ()), min_node_spacing);
+  return time_step_controller.next (dt, wave_speeds, min_node_spacing);
 }
 
 template <int dim>
@@ -545,6 +551,7 @@ void TwoFluidSolver<dim>::advance ()
   time += dt;
   previous_time_step = dt;
   ++step_number;
+  update_wave_speeds ();
   const bool last_step = time >= parameters.time.end_time * (1 - 1e-12);
   if (step_number % parameters.output.monitor_interval == 0 || last_step)
     record_monitors ();
@@ -576,6 +583,7 @@ typename TwoFluidSolver<dim>::RunEnd TwoFluidSolver<dim>::run ()
         step_number % parameters.adaptive_refinement.interval == 0)
     {
       adapt_mesh ();
+      update_wave_speeds ();
       time_step = next_time_step (previous_time_step); // the CFL of the new mesh
     }
     analyse_bubbles ();

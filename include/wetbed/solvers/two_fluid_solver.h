@@ -156,7 +156,10 @@ private:
   /** Mesh, fields and time-stepping state from the checkpoint (checkpoint.cc). */
   void resume_from_checkpoint ();
   bool try_time_step (double dt, unsigned int bdf_order);
-  /** The next step after one of length dt (TimeStepController, on this state). */
+  /** The peak speeds of the current fields into `wave_speeds` (once for each new
+   * state: after the initial state, each step, each mesh change). */
+  void update_wave_speeds ();
+  /** The next step after one of length dt (TimeStepController, on `wave_speeds`). */
   double next_time_step (double dt) const;
   /** A read-only view of the current state, for the postprocessors and the time-step
    * controller (source/solvers/postprocessing.cc). */
@@ -278,6 +281,7 @@ private:
   std::unique_ptr<BubbleAnalysis<dim>> bubble_analysis;
   double                               time, time_step, previous_time_step;
   unsigned int step_number, rejected_steps, last_krylov_iterations;
+  WaveSpeeds   wave_speeds; // of the current fields (update_wave_speeds)
   double       next_output_time;
   unsigned int output_index;
   // the XDMF index of the HDF5 outputs written so far (rewritten at each output)
