@@ -100,7 +100,7 @@ void TwoFluidSolver<dim>::restore_solids_mass (AlphaVector             &a,
                                                const std::vector<bool> &candidate) const
 {
   // sum_i m_i a_i is int alpha_h (condensed lumped mass, hanging nodes included)
-  const auto  &m         = transport.lumped_mass ();
+  const auto  &m         = solids_transport.lumped_mass ();
   const double alpha_max = parameters.physical.maximum_packing;
   const double deficit =
       (target - solids_mass (a)) / parameters.physical.particle_density; // volume

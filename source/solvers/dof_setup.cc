@@ -76,17 +76,8 @@ void TwoFluidSolver<dim>::setup_dofs ()
                       boundaries,
                       alpha);
 
-  transport.setup (alpha_dof_handler, mapping, alpha_constraints, alpha);
-
-  {
-    const IndexSet         alpha_owned = alpha_dof_handler.locally_owned_dofs ();
-    DynamicSparsityPattern dsp (alpha_relevant);
-    DoFTools::make_sparsity_pattern (alpha_dof_handler, dsp, alpha_constraints, false);
-    SparsityTools::distribute_sparsity_pattern (
-        dsp, alpha_owned, communicator, alpha_relevant);
-    correction_matrix.reinit (alpha_owned, alpha_owned, dsp, communicator);
-    compaction_flux_matrix.reinit (alpha_owned, alpha_owned, dsp, communicator);
-  }
+  // the transport operator and the correction matrices
+  solids_transport.reinit (mapping, alpha_dof_handler, alpha_constraints, alpha);
   if (kinetic_theory)
     granular_energy.reinit (alpha_dof_handler, alpha_constraints); // PDE: its sparsity
 

@@ -28,7 +28,7 @@ SolverState<dim> TwoFluidSolver<dim>::state () const
                           flow_dof_handler,
                           alpha_fe,
                           alpha_dof_handler,
-                          transport.lumped_mass (),
+                          solids_transport.lumped_mass (),
                           flow_solution,
                           flow_old2, // after the step the history has shifted
                           alpha,
@@ -45,7 +45,7 @@ SolverState<dim> TwoFluidSolver<dim>::state () const
                           rejected_steps,
                           last_krylov_iterations,
                           initial_solids_mass,
-                          correction_momentum,
+                          solids_transport.correction_momentum (),
                           granular_energy.budget (),
                           wave_speeds};
 }

@@ -53,6 +53,7 @@ TwoFluidSolver<dim>::TwoFluidSolver (const Parameters &parameters, MPI_Comm comm
                          *solids_stress,
                          gas_particle,
                          parameters.physical.residual_solids_fraction),
+      solids_transport (parameters, communicator, timer),
       time_step_controller (parameters.time), time (0),
       time_step (parameters.time.initial_time_step), previous_time_step (0),
       step_number (0), rejected_steps (0), last_krylov_iterations (0),
@@ -335,54 +336,11 @@ double TwoFluidSolver<dim>::solids_mass (const AlphaVector &a) const
 }
 
 template <int dim>
-void TwoFluidSolver<dim>::transport_and_correct_solids (AlphaVector &alpha_momentum,
-                                                        const BDFCoefficients &bdf,
-                                                        const double           dt)
-{
-  // explicit bounded transport from t_n with the midpoint of u_s^n and u_s*
-  {
-    TimerOutput::Scope scope (timer, "alpha transport");
-    alpha_momentum = alpha;
-    alpha_momentum.update_ghost_values ();
-    const FEValuesExtractors::Vector solids (dim);
-    // the transport integrates with QGauss(3) on the alpha cell; the same points on
-    // the flow cell of the same triangulation cell give u_s there
-    FEValues<dim> flow_values (mapping, flow_fe, QGauss<dim> (3), update_values);
-    std::vector<Tensor<1, dim>> u_now, u_before;
-    transport.set_velocity (
-        [&] (const typename DoFHandler<dim>::active_cell_iterator &alpha_cell,
-             const FEValues<dim> & /*alpha_values: QGauss(3) as flow_values*/,
-             std::vector<Tensor<1, dim>> &u)
-        {
-          flow_values.reinit (
-              typename DoFHandler<dim>::active_cell_iterator (&triangulation,
-                                                              alpha_cell->level (),
-                                                              alpha_cell->index (),
-                                                              &flow_dof_handler));
-          u_now.resize (u.size ());
-          u_before.resize (u.size ());
-          flow_values[solids].get_function_values (flow_solution, u_now);
-          flow_values[solids].get_function_values (flow_old, u_before);
-          for (unsigned int i = 0; i < u.size (); ++i)
-            u[i] = 0.5 * (u_now[i] + u_before[i]);
-        });
-    alpha = alpha_old;
-    transport.advance (
-        alpha, dt, parameters.time.transport_cfl, parameters.physical.maximum_packing);
-  }
-  // implicit solids-pressure correction of alpha_s, then of u_s with the same
-  // compaction response, so that velocity and packing stay consistent
-  if (correct_solids_pressure (alpha_momentum, bdf, dt))
-    correct_solids_velocity (alpha_momentum, bdf, dt);
-}
-
-template <int dim>
 bool TwoFluidSolver<dim>::try_time_step (const double dt, const unsigned int bdf_order)
 {
   const BDFCoefficients bdf = bdf_coefficients (bdf_order, dt, previous_time_step);
   make_flow_constraints (time + dt);
   last_krylov_iterations = 0;
-  AlphaVector alpha_momentum (alpha);
   // the granular temperature (PDE or local equilibrium) from the latest alpha_s and u_s;
   // false (rejection_reason) if its solve failed
   const auto update_granular_temperature = [&] ()
@@ -410,7 +368,6 @@ bool TwoFluidSolver<dim>::try_time_step (const double dt, const unsigned int bdf
   for (unsigned int k = 0; k < parameters.time.outer_iterations; ++k)
   {
     solve_history.set_outer_iteration (k);
-    correction_momentum = 0;
     // 1. closures at quadrature points + monolithic (u_g, u_s, p') solve with
     //    P_s(alpha_m) explicit, alpha_m the latest alpha_s (alpha_s^n at k = 0)
     assemble_flow_system (bdf, dt);
@@ -435,7 +392,22 @@ bool TwoFluidSolver<dim>::try_time_step (const double dt, const unsigned int bdf
     }
     // 2.-3. alpha_s transport and compaction correction (held solids: alpha_s stays)
     if (!parameters.boundary.hold_solids)
-      transport_and_correct_solids (alpha_momentum, bdf, dt);
+      solids_transport.advance ({mapping,
+                                 flow_fe,
+                                 flow_dof_handler,
+                                 flow_owned,
+                                 flow_constraints,
+                                 alpha_fe,
+                                 alpha_dof_handler,
+                                 alpha_constraints,
+                                 flow_old,
+                                 alpha_old,
+                                 closure_evaluator,
+                                 bdf,
+                                 dt},
+                                alpha,
+                                flow_solution,
+                                solve_history);
     // 4. granular temperature with the new alpha_s and u_s (PDE or local equilibrium);
     //    it also evolves in a held solids velocity field
     if (kinetic_theory && !update_granular_temperature ())

@@ -1,7 +1,6 @@
 #pragma once
 
 #include <wetbed/assembly/flow/flow_assembler.h>
-#include <wetbed/assembly/volume_fraction_transport.h>
 #include <wetbed/boundary_conditions/wall_conditions.h>
 #include <wetbed/closures/closure_evaluator.h>
 #include <wetbed/closures/drag/drag_model.h>
@@ -17,6 +16,7 @@
 #include <wetbed/postprocess/monitors.h>
 #include <wetbed/solvers/flow_system.h>
 #include <wetbed/solvers/granular_energy_solver.h>
+#include <wetbed/solvers/solids_transport.h>
 #include <wetbed/solvers/solve_history.h>
 #include <wetbed/solvers/solver_state.h>
 #include <wetbed/solvers/time_step_controller.h>
@@ -171,31 +171,7 @@ private:
   /** The flow terms of this case, once the mesh's boundaries are known. */
   std::unique_ptr<FlowAssembler<dim>> make_flow_assembler () const;
   /** The flow system linearised about the current iterate (FlowSystem::assemble). */
-  void   assemble_flow_system (const BDFCoefficients &bdf, double dt);
-  double compaction_stiffness (double alpha_s, double alpha_m) const;
-  /** alpha_s/R: the solids volume flux a unit compaction force gradient drives. */
-  double compaction_mobility (double                        alpha_s,
-                              const dealii::Tensor<1, dim> &slip,
-                              double                        rate) const;
-  /** dP_s/dalpha at the alpha_s nodes of a cell (compaction_stiffness node by node). */
-  void
-  nodal_compaction_stiffness (const std::vector<dealii::types::global_dof_index> &dofs,
-                              const AlphaVector   &alpha_momentum,
-                              std::vector<double> &slopes) const;
-  /** Explicit bounded alpha_s transport from t_n with the midpoint of u_s^n and u_s*,
-   * then the implicit solids-pressure correction of alpha_s and u_s; alpha_momentum
-   * receives the alpha_s the momentum solve saw. */
-  void transport_and_correct_solids (AlphaVector           &alpha_momentum,
-                                     const BDFCoefficients &bdf,
-                                     double                 dt);
-  /** Returns false where no compacted region exists (nothing was done). */
-  bool correct_solids_pressure (const AlphaVector     &alpha_momentum,
-                                const BDFCoefficients &bdf,
-                                double                 dt);
-  /** u_s += -P_s'(alpha) / (a0 alpha_s rho_s / dt + beta) grad (alpha - alpha_m). */
-  void correct_solids_velocity (const AlphaVector     &alpha_momentum,
-                                const BDFCoefficients &bdf,
-                                double                 dt);
+  void assemble_flow_system (const BDFCoefficients &bdf, double dt);
 
   // postprocessing: the components in source/postprocess/ read state(); their
   // orchestration (source/solvers/postprocessing.cc)
@@ -269,13 +245,10 @@ private:
   dealii::FunctionParser<3> held_velocity_function{3}; // u_s(x, y, z, t) where held
   std::shared_ptr<ManufacturedSolution<dim>> manufactured;
 
-  VolumeFractionTransport<dim> transport;
-  TimeStepController           time_step_controller;
-  // compaction correction: M_L + dt K diag(P'_j) (solved) and dt K (the edge fluxes)
-  dealii::TrilinosWrappers::SparseMatrix correction_matrix, compaction_flux_matrix;
-  // vertical mixture momentum the velocity half of the compaction correction added in
-  // the last outer iteration (N s, per metre depth in 2D), for the momentum budget
-  double correction_momentum = 0;
+  // the alpha_s transport and compaction correction, its operators and the momentum
+  // its velocity correction added
+  SolidsTransport<dim> solids_transport;
+  TimeStepController   time_step_controller;
 
   Monitors                             monitors;
   std::unique_ptr<BubbleAnalysis<dim>> bubble_analysis;
