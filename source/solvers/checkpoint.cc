@@ -274,11 +274,11 @@ void TwoFluidSolver<dim>::write_checkpoint ()
   state.previous_time_step  = previous_time_step;
   state.step_number         = step_number;
   state.rejected_steps      = rejected_steps;
-  state.next_output_time    = next_output_time;
-  state.output_index        = output_index;
+  state.next_output_time    = field_output.counters ().next_output_time;
+  state.output_index        = field_output.counters ().output_index;
   state.initial_solids_mass = initial_solids_mass;
   state.monitors_bytes      = monitors.bytes_written ();
-  state.xdmf_entries        = xdmf_entries;
+  state.xdmf_entries        = field_output.counters ().xdmf_entries;
   state.bubble_state        = bubble_analysis->saved_state ();
   state.run_id              = run_id;
   state.mesh_file_hash =
@@ -420,11 +420,9 @@ void TwoFluidSolver<dim>::resume_from_checkpoint ()
   previous_time_step  = state.previous_time_step;
   step_number         = state.step_number;
   rejected_steps      = state.rejected_steps;
-  next_output_time    = state.next_output_time;
-  output_index        = state.output_index;
   initial_solids_mass = state.initial_solids_mass;
-  xdmf_entries        = state.xdmf_entries;
-  run_id              = state.run_id;
+  field_output.restore ({state.next_output_time, state.output_index, state.xdmf_entries});
+  run_id = state.run_id;
   make_flow_constraints (time);
 
   monitors.reopen (output + "/monitors.csv",

@@ -54,11 +54,10 @@ TwoFluidSolver<dim>::TwoFluidSolver (const Parameters &parameters, MPI_Comm comm
                          gas_particle,
                          parameters.physical.residual_solids_fraction),
       solids_transport (parameters, communicator, timer),
-      time_step_controller (parameters.time), time (0),
+      time_step_controller (parameters.time), field_output (parameters, timer), time (0),
       time_step (parameters.time.initial_time_step), previous_time_step (0),
       step_number (0), rejected_steps (0), last_krylov_iterations (0),
-      next_output_time (0), output_index (0), initial_solids_mass (0),
-      min_node_spacing (0)
+      initial_solids_mass (0), min_node_spacing (0)
 {
   inlet_velocity_function.initialize (
       "t", parameters.boundary.inlet_superficial_velocity, {});
@@ -501,7 +500,7 @@ void TwoFluidSolver<dim>::advance ()
       flow_solution = saved_flow;
       alpha         = alpha_old;
       theta         = theta_old;
-      write_fields ();
+      field_output.write (state ());
       write_checkpoint ();
       throw std::runtime_error ("time step fell below time stepping/minimum time step (" +
                                 std::to_string (ts.minimum_time_step) +
@@ -545,7 +544,7 @@ typename TwoFluidSolver<dim>::RunEnd TwoFluidSolver<dim>::run ()
     record_monitors ();
     analyse_bubbles ();
     if (parameters.output.field_interval >= 0)
-      write_fields ();
+      field_output.write (state ());
   }
   const auto &checkpoint = parameters.checkpoint;
   while (time < ts.end_time * (1 - 1e-12))
@@ -581,8 +580,8 @@ typename TwoFluidSolver<dim>::RunEnd TwoFluidSolver<dim>::run ()
             << ")" << std::endl;
       return RunEnd::stopped_by_signal;
     }
-    if (parameters.output.field_interval > 0 && time >= next_output_time - 1e-12)
-      write_fields ();
+    if (field_output.due (time))
+      field_output.write (state ());
     if (step_number % parameters.output.progress_interval == 0 ||
         time >= ts.end_time * (1 - 1e-12))
     {
@@ -601,7 +600,7 @@ typename TwoFluidSolver<dim>::RunEnd TwoFluidSolver<dim>::run ()
     }
   }
   if (parameters.output.field_interval == 0)
-    write_fields ();
+    field_output.write (state ());
   if (checkpoint.at_end &&
       !(checkpoint.interval > 0 && step_number % checkpoint.interval == 0))
     write_checkpoint ();

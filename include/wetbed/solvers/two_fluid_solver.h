@@ -13,6 +13,7 @@
 #include <wetbed/mesh/mesh_input.h>
 #include <wetbed/mesh/partition_independent_triangulation.h>
 #include <wetbed/postprocess/bubble_analysis.h>
+#include <wetbed/postprocess/field_output.h>
 #include <wetbed/postprocess/monitors.h>
 #include <wetbed/solvers/flow_system.h>
 #include <wetbed/solvers/granular_energy_solver.h>
@@ -22,7 +23,6 @@
 #include <wetbed/solvers/time_step_controller.h>
 
 #include <deal.II/base/conditional_ostream.h>
-#include <deal.II/base/data_out_base.h>
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/distributed/solution_transfer.h>
@@ -89,7 +89,8 @@ public:
   Errors compute_errors () const;
 
   /** The fields at the points, each u_g (dim), u_s (dim), p', alpha_s, Theta; NaN
-   * outside the mesh (source/postprocess/point_sampling.cc); collective. */
+   * outside the mesh (sample_fields, source/postprocess/point_sampling.cc);
+   * collective. */
   std::vector<std::vector<double>>
   sample (const std::vector<dealii::Point<dim>> &points) const;
 
@@ -185,7 +186,6 @@ private:
   /** spectrum.csv from monitors.csv, at the end of a run that lasted past the spectrum
    * start time (rank 0). */
   void write_spectra () const;
-  void write_fields () const;
 
   /** The cause of the last rejection and where the failed state is extreme
    * (source/solvers/failure_report.cc); collective. */
@@ -252,19 +252,17 @@ private:
 
   Monitors                             monitors;
   std::unique_ptr<BubbleAnalysis<dim>> bubble_analysis;
-  double                               time, time_step, previous_time_step;
-  unsigned int step_number, rejected_steps, last_krylov_iterations;
-  WaveSpeeds   wave_speeds; // of the current fields (update_wave_speeds)
-  double       next_output_time;
-  unsigned int output_index;
-  // the XDMF index of the HDF5 outputs written so far (rewritten at each output)
-  mutable std::vector<dealii::XDMFEntry> xdmf_entries;
-  double                                 initial_solids_mass;
-  double                                 min_node_spacing;
-  bool                                   initialized = false;
-  bool         resumed = false;  // the state came from a checkpoint
-  std::string  run_id;           // new for each run, kept by its resumes
-  std::string  rejection_reason; // why the last attempted step was rejected
-  SolveHistory solve_history;    // the linear solves of the current step
+  // the field files and their counters
+  FieldOutput<dim> field_output;
+  double           time, time_step, previous_time_step;
+  unsigned int     step_number, rejected_steps, last_krylov_iterations;
+  WaveSpeeds       wave_speeds; // of the current fields (update_wave_speeds)
+  double           initial_solids_mass;
+  double           min_node_spacing;
+  bool             initialized = false;
+  bool             resumed     = false; // the state came from a checkpoint
+  std::string      run_id;              // new for each run, kept by its resumes
+  std::string      rejection_reason;    // why the last attempted step was rejected
+  SolveHistory     solve_history;       // the linear solves of the current step
 };
 } // namespace wetbed
