@@ -408,11 +408,8 @@ void TwoFluidSolver<dim>::resume_from_checkpoint ()
   connect_load_balancing ();
   setup_dofs ();
 
-  {
-    FieldTransfers transfers{std::make_unique<FlowTransfer> (flow_dof_handler),
-                             std::make_unique<ScalarTransfer> (alpha_dof_handler)};
-    receive_fields (transfers, true);
-  }
+  FieldTransfer<dim> (flow_dof_handler, alpha_dof_handler)
+      .receive (transferred_fields (), flow_owned, alpha_constraints, true);
   bubble_analysis->deserialize ();
 
   time                = state.time;

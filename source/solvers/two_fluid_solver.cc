@@ -54,7 +54,8 @@ TwoFluidSolver<dim>::TwoFluidSolver (const Parameters &parameters, MPI_Comm comm
                          gas_particle,
                          parameters.physical.residual_solids_fraction),
       solids_transport (parameters, communicator, timer),
-      time_step_controller (parameters.time), field_output (parameters, timer), time (0),
+      time_step_controller (parameters.time), mesh_adaptation (parameters),
+      field_output (parameters, timer), time (0),
       time_step (parameters.time.initial_time_step), previous_time_step (0),
       step_number (0), rejected_steps (0), last_krylov_iterations (0),
       initial_solids_mass (0), min_node_spacing (0)
@@ -143,6 +144,31 @@ void TwoFluidSolver<dim>::initialize ()
   if (parameters.checkpoint.on_signal)
     catch_stop_signals ();
   initialized = true;
+}
+
+template <int dim>
+TransferredFields<dim> TwoFluidSolver<dim>::transferred_fields ()
+{
+  return {{&flow_solution, &flow_old, &flow_old2},
+          {&alpha, &alpha_old, &alpha_old2, &theta, &theta_old, &theta_old2}};
+}
+
+template <int dim>
+void TwoFluidSolver<dim>::adapt_mesh ()
+{
+  // flags from the state, every field and its history moved with the mesh, then the
+  // solids mass the coarsening lost given back (doc/theory.md, "Adaptive meshes")
+  TimerOutput::Scope scope (timer, "adaptive refinement");
+  mesh_adaptation.prepare (state (), triangulation, {&alpha, &alpha_old, &alpha_old2});
+  FieldTransfer<dim> transfer (flow_dof_handler, alpha_dof_handler);
+  transfer.attach (transferred_fields (), false);
+  bubble_analysis->prepare_for_mesh_change ();
+  triangulation.execute_coarsening_and_refinement ();
+  setup_dofs ();
+  transfer.receive (transferred_fields (), flow_owned, alpha_constraints, false);
+  bubble_analysis->after_mesh_change ();
+  mesh_adaptation.restore_solids_mass (
+      state (), alpha_constraints, {&alpha, &alpha_old, &alpha_old2});
 }
 
 template <int dim>

@@ -15,8 +15,10 @@
 #include <wetbed/postprocess/bubble_analysis.h>
 #include <wetbed/postprocess/field_output.h>
 #include <wetbed/postprocess/monitors.h>
+#include <wetbed/solvers/field_transfer.h>
 #include <wetbed/solvers/flow_system.h>
 #include <wetbed/solvers/granular_energy_solver.h>
+#include <wetbed/solvers/mesh_adaptation.h>
 #include <wetbed/solvers/solids_transport.h>
 #include <wetbed/solvers/solve_history.h>
 #include <wetbed/solvers/solver_state.h>
@@ -25,7 +27,6 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/timer.h>
-#include <deal.II/distributed/solution_transfer.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_q.h>
@@ -122,36 +123,15 @@ private:
   void make_schur_constraints (const dealii::IndexSet         &relevant,
                                dealii::types::global_dof_index pinned);
   void set_initial_state ();
-  // moving the fields with the mesh (source/solvers/field_transfer.cc)
-  using FlowTransfer = dealii::parallel::distributed::SolutionTransfer<dim, BlockVector>;
-  using ScalarTransfer =
-      dealii::parallel::distributed::SolutionTransfer<dim, AlphaVector>;
-  struct FieldTransfers
-  {
-    std::unique_ptr<FlowTransfer>   flow;
-    std::unique_ptr<ScalarTransfer> scalars;
-  };
   /** The fields a mesh change or a checkpoint carries, in their fixed order. */
-  std::vector<BlockVector *> flow_fields ();
-  std::vector<AlphaVector *> scalar_fields ();
-  /** Attaches every field to the triangulation, for a mesh change or for save(). */
-  FieldTransfers attach_fields (bool for_serialization);
-  /** After the mesh change (or load()) and setup_dofs(): every field on the new mesh,
-   * hanging nodes at their constrained values. */
-  void receive_fields (FieldTransfers &transfers, bool from_checkpoint);
-
-  // adaptive refinement (source/solvers/adaptive_refinement.cc)
-  /** Flags, refines/coarsens, transfers every field and its history, rebuilds. */
+  TransferredFields<dim> transferred_fields ();
+  /** Adapts the mesh (MeshAdaptation), moves every field and its history with it
+   * (FieldTransfer) and rebuilds the DoFs (two_fluid_solver.cc). */
   void adapt_mesh ();
   /** Connects the cell weights (mesh/wall face weight) once the walls are known and,
-   * where they are not uniform on several ranks, repartitions the mesh by them. */
+   * where they are not uniform on several ranks, repartitions the mesh by them
+   * (dof_setup.cc). */
   void connect_load_balancing ();
-  void flag_cells_for_adaptation ();
-  /** Gives `target - sum m a` back to `a` where `candidate` (else anywhere), in
-   * proportion to the room within [0, alpha_max]. */
-  void restore_solids_mass (AlphaVector             &a,
-                            double                   target,
-                            const std::vector<bool> &candidate) const;
   /** Each phase's condition on each wall group, once the mesh's boundaries are known. */
   void make_wall_conditions ();
   /** Mesh, fields and time-stepping state from the checkpoint (checkpoint.cc). */
@@ -249,6 +229,8 @@ private:
   // its velocity correction added
   SolidsTransport<dim> solids_transport;
   TimeStepController   time_step_controller;
+
+  MeshAdaptation<dim> mesh_adaptation;
 
   Monitors                             monitors;
   std::unique_ptr<BubbleAnalysis<dim>> bubble_analysis;
