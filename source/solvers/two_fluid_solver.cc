@@ -1,5 +1,6 @@
 #include <wetbed/core/input_error.h>
 #include <wetbed/core/stop_signal.h>
+#include <wetbed/postprocess/bed_monitors.h>
 #include <wetbed/solvers/two_fluid_solver.h>
 #include <wetbed/solvers/wave_speeds.h>
 
@@ -55,6 +56,7 @@ TwoFluidSolver<dim>::TwoFluidSolver (const Parameters &parameters, MPI_Comm comm
                          parameters.physical.residual_solids_fraction),
       solids_transport (parameters, communicator, timer),
       time_step_controller (parameters.time), mesh_adaptation (parameters),
+      checkpointing (parameters, communicator, pcout, timer),
       field_output (parameters, timer), time (0),
       time_step (parameters.time.initial_time_step), previous_time_step (0),
       step_number (0), rejected_steps (0), last_krylov_iterations (0),
@@ -144,6 +146,55 @@ void TwoFluidSolver<dim>::initialize ()
   if (parameters.checkpoint.on_signal)
     catch_stop_signals ();
   initialized = true;
+}
+
+template <int dim>
+void TwoFluidSolver<dim>::resume_from_checkpoint ()
+{
+  // the checked state, the coarse mesh, the saved mesh and partition, then the DoFs and
+  // the fields on them, in the order the checkpoint was written
+  const CheckpointState saved = checkpointing.read ();
+  boundaries                  = checkpointing.read_coarse_mesh (saved, triangulation);
+  make_wall_conditions ();
+  make_bubble_analysis ();
+  checkpointing.load_mesh (triangulation);
+  connect_load_balancing ();
+  setup_dofs ();
+  FieldTransfer<dim> (flow_dof_handler, alpha_dof_handler)
+      .receive (transferred_fields (), flow_owned, alpha_constraints, true);
+  bubble_analysis->deserialize ();
+
+  time                = saved.time;
+  time_step           = saved.time_step;
+  previous_time_step  = saved.previous_time_step;
+  step_number         = saved.step_number;
+  rejected_steps      = saved.rejected_steps;
+  initial_solids_mass = saved.initial_solids_mass;
+  run_id              = saved.run_id;
+  field_output.restore ({saved.next_output_time, saved.output_index, saved.xdmf_entries});
+  make_flow_constraints (time);
+
+  const std::string output = parameters.output.folder;
+  monitors.reopen (output + "/monitors.csv",
+                   Utilities::MPI::this_mpi_process (communicator) == 0,
+                   saved.monitors_bytes,
+                   monitor_columns ());
+  update_wave_speeds ();
+  monitors.restore (evaluate_monitors (state ()));
+  bubble_analysis->restore_state (saved.bubble_state, output);
+  resumed = true;
+  pcout << "Resumed run " << run_id << " from " << checkpointing.source ()
+        << " at t = " << time << " (step " << step_number << ")" << std::endl;
+}
+
+template <int dim>
+void TwoFluidSolver<dim>::write_checkpoint ()
+{
+  checkpointing.write (
+      state (),
+      transferred_fields (),
+      *bubble_analysis,
+      {time_step, monitors.bytes_written (), run_id, field_output.counters ()});
 }
 
 template <int dim>
@@ -308,7 +359,7 @@ void TwoFluidSolver<dim>::set_initial_state ()
   flow_old      = owned_flow;
   flow_old2     = owned_flow;
 
-  initial_solids_mass = solids_mass (alpha);
+  initial_solids_mass = state ().solids_mass (alpha);
 }
 
 template <int dim>
@@ -352,12 +403,6 @@ TwoFluidSolver<dim>::hydrostatic_profile (const std::vector<double> &heights) co
     profile.emplace_back (*z, alpha_above);
   }
   return profile;
-}
-
-template <int dim>
-double TwoFluidSolver<dim>::solids_mass (const AlphaVector &a) const
-{
-  return state ().solids_mass (a);
 }
 
 template <int dim>

@@ -15,6 +15,7 @@
 #include <wetbed/postprocess/bubble_analysis.h>
 #include <wetbed/postprocess/field_output.h>
 #include <wetbed/postprocess/monitors.h>
+#include <wetbed/solvers/checkpointing.h>
 #include <wetbed/solvers/field_transfer.h>
 #include <wetbed/solvers/flow_system.h>
 #include <wetbed/solvers/granular_energy_solver.h>
@@ -73,8 +74,7 @@ public:
    * the saved state (run() calls it). */
   void initialize ();
 
-  /** Saves the run state in <output folder>/checkpoint (source/solvers/checkpoint.cc);
-   * collective. */
+  /** Saves the run state in <output folder>/checkpoint (Checkpointing); collective. */
   void write_checkpoint ();
 
   /** Advances one accepted time step (retrying smaller steps as needed). */
@@ -134,7 +134,8 @@ private:
   void connect_load_balancing ();
   /** Each phase's condition on each wall group, once the mesh's boundaries are known. */
   void make_wall_conditions ();
-  /** Mesh, fields and time-stepping state from the checkpoint (checkpoint.cc). */
+  /** Mesh, fields and time-stepping state from the checkpoint (Checkpointing, its
+   * parts in order; two_fluid_solver.cc). */
   void resume_from_checkpoint ();
   bool try_time_step (double dt, unsigned int bdf_order);
   /** The peak speeds of the current fields into `wave_speeds` (once for each new
@@ -178,7 +179,6 @@ private:
                               dealii::AffineConstraints<double> &constraints) const;
   /** The velocity of the moving wall in the mesh's dimensions (zero without one). */
   dealii::Tensor<1, dim> moving_wall_velocity () const;
-  double                 solids_mass (const AlphaVector &alpha) const;
   /** (height, alpha_s) of the discrete rest state at the given vertex heights, top down.
    */
   std::vector<std::pair<double, double>>
@@ -231,6 +231,7 @@ private:
   TimeStepController   time_step_controller;
 
   MeshAdaptation<dim> mesh_adaptation;
+  Checkpointing<dim>  checkpointing;
 
   Monitors                             monitors;
   std::unique_ptr<BubbleAnalysis<dim>> bubble_analysis;
