@@ -200,8 +200,8 @@ void TwoFluidSolver<dim>::write_checkpoint ()
 template <int dim>
 TransferredFields<dim> TwoFluidSolver<dim>::transferred_fields ()
 {
-  return {{&flow_solution, &flow_old, &flow_old2},
-          {&alpha, &alpha_old, &alpha_old2, &theta, &theta_old, &theta_old2}};
+  return {{{&flow_solution, &flow_old, &flow_old2}},
+          {{&alpha, &alpha_old, &alpha_old2, &theta, &theta_old, &theta_old2}}};
 }
 
 template <int dim>
@@ -210,7 +210,7 @@ void TwoFluidSolver<dim>::adapt_mesh ()
   // flags from the state, every field and its history moved with the mesh, then the
   // solids mass the coarsening lost given back (doc/theory.md, "Adaptive meshes")
   TimerOutput::Scope scope (timer, "adaptive refinement");
-  mesh_adaptation.prepare (state (), triangulation, {&alpha, &alpha_old, &alpha_old2});
+  mesh_adaptation.prepare (state (), triangulation, {{&alpha, &alpha_old, &alpha_old2}});
   FieldTransfer<dim> transfer (flow_dof_handler, alpha_dof_handler);
   transfer.attach (transferred_fields (), false);
   bubble_analysis->prepare_for_mesh_change ();
@@ -219,7 +219,7 @@ void TwoFluidSolver<dim>::adapt_mesh ()
   transfer.receive (transferred_fields (), flow_owned, alpha_constraints, false);
   bubble_analysis->after_mesh_change ();
   mesh_adaptation.restore_solids_mass (
-      state (), alpha_constraints, {&alpha, &alpha_old, &alpha_old2});
+      state (), alpha_constraints, {{&alpha, &alpha_old, &alpha_old2}});
 }
 
 template <int dim>
