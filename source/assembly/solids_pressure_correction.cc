@@ -1,4 +1,4 @@
-#include <wetbed/solvers/two_fluid_solver.h>
+#include <wetbed/solvers/solids_transport.h>
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
@@ -44,21 +44,25 @@ using namespace dealii;
  * r ~ 5) they are damped by ~1/2 per step.
  */
 template <int dim>
-double TwoFluidSolver<dim>::compaction_stiffness (const double alpha_s,
-                                                  const double alpha_m) const
+double
+SolidsTransport<dim>::compaction_stiffness (const closures::ClosureEvaluator &closures,
+                                            const double                      alpha_s,
+                                            const double alpha_m) const
 {
-  return closure_evaluator.compaction_slope (std::max (alpha_s, alpha_m));
+  return closures.compaction_slope (std::max (alpha_s, alpha_m));
 }
 
 template <int dim>
-void TwoFluidSolver<dim>::nodal_compaction_stiffness (
+void SolidsTransport<dim>::nodal_compaction_stiffness (
+    const closures::ClosureEvaluator           &closures,
     const std::vector<types::global_dof_index> &dofs,
-    const AlphaVector                          &alpha_momentum,
+    const AlphaVector                          &alpha,
     std::vector<double>                        &slopes) const
 {
   slopes.resize (dofs.size ());
   for (unsigned int j = 0; j < dofs.size (); ++j)
-    slopes[j] = compaction_stiffness (alpha (dofs[j]), alpha_momentum (dofs[j]));
+    slopes[j] =
+        compaction_stiffness (closures, alpha (dofs[j]), alpha_momentum (dofs[j]));
 }
 
 /**
@@ -71,25 +75,38 @@ void TwoFluidSolver<dim>::nodal_compaction_stiffness (
  * alpha_s -> 0 (beta ~ alpha_s); 0 where there are no solids.
  */
 template <int dim>
-double TwoFluidSolver<dim>::compaction_mobility (const double          alpha_s,
-                                                 const Tensor<1, dim> &slip,
-                                                 const double          rate) const
+double
+SolidsTransport<dim>::compaction_mobility (const closures::ClosureEvaluator &closures,
+                                           const double                      alpha_s,
+                                           const Tensor<1, dim>             &slip,
+                                           const double                      rate) const
 {
   if (!(alpha_s > 0))
     return 0.0;
   const double alpha_g = std::max (1.0 - alpha_s, 1e-6);
   const auto  &pp      = parameters.physical;
-  const double beta    = closure_evaluator.drag (alpha_s, slip.norm ());
+  const double beta    = closures.drag (alpha_s, slip.norm ());
   return 1.0 / (rate * (pp.particle_density + alpha_s * pp.gas_density / alpha_g) +
                 beta / (alpha_s * alpha_g * alpha_g));
 }
 
 template <int dim>
-bool TwoFluidSolver<dim>::correct_solids_pressure (const AlphaVector     &alpha_momentum,
-                                                   const BDFCoefficients &bdf,
-                                                   const double           dt)
+bool SolidsTransport<dim>::correct_solids_pressure (
+    const SolidsTransportInputs<dim> &inputs,
+    const BlockVector                &flow_solution,
+    AlphaVector                      &alpha,
+    SolveHistory                     &history)
 {
-  TimerOutput::Scope scope (timer, "solids pressure correction");
+  TimerOutput::Scope                scope (timer, "solids pressure correction");
+  const Mapping<dim>               &mapping           = inputs.mapping;
+  const FiniteElement<dim>         &alpha_fe          = inputs.alpha_fe;
+  const FiniteElement<dim>         &flow_fe           = inputs.flow_fe;
+  const DoFHandler<dim>            &alpha_dof_handler = inputs.alpha_dof_handler;
+  const DoFHandler<dim>            &flow_dof_handler  = inputs.flow_dof_handler;
+  const AffineConstraints<double>  &alpha_constraints = inputs.alpha_constraints;
+  const closures::ClosureEvaluator &closures          = inputs.closures;
+  const BDFCoefficients            &bdf               = inputs.bdf;
+  const double                      dt                = inputs.dt;
 
   const QGauss<dim>  quadrature (2);
   FEValues<dim>      alpha_values (mapping,
@@ -116,7 +133,7 @@ bool TwoFluidSolver<dim>::correct_solids_pressure (const AlphaVector     &alpha_
     if (cell->is_locally_owned ())
     {
       cell->get_dof_indices (dofs);
-      nodal_compaction_stiffness (dofs, alpha_momentum, slopes);
+      nodal_compaction_stiffness (closures, dofs, alpha, slopes);
       alpha_values.reinit (cell);
       flow_values.reinit (flow_cell);
       alpha_values.get_function_values (alpha, a);
@@ -135,7 +152,8 @@ bool TwoFluidSolver<dim>::correct_solids_pressure (const AlphaVector     &alpha_
           cell_mass (i) += alpha_values.shape_value (i, q) * alpha_values.JxW (q);
         if (!compacted)
           continue;
-        const double diffusivity = compaction_mobility (a[q], ug[q] - us[q], bdf.a0 / dt);
+        const double diffusivity =
+            compaction_mobility (closures, a[q], ug[q] - us[q], bdf.a0 / dt);
         for (unsigned int i = 0; i < n; ++i)
           for (unsigned int j = 0; j < n; ++j)
             cell_flux (i, j) +=
@@ -179,17 +197,17 @@ bool TwoFluidSolver<dim>::correct_solids_pressure (const AlphaVector     &alpha_
   }
   catch (const SolverControl::NoConvergence &)
   {
-    solve_history.record ("solids-pressure correction CG", control, false);
+    history.record ("solids-pressure correction CG", control, false);
     throw;
   }
-  solve_history.record ("solids-pressure correction CG", control, true);
+  history.record ("solids-pressure correction CG", control, true);
   // the nodal pressure increment w = S z becomes the limited edge fluxes
   // -dt K_ij (w_j - w_i)
   AlphaVector pressure_increment (alpha);
   for (unsigned int i = 0; i < pressure_increment.locally_owned_size (); ++i)
     pressure_increment.local_element (i) =
-        std::sqrt (compaction_stiffness (alpha.local_element (i),
-                                         alpha_momentum.local_element (i))) *
+        std::sqrt (compaction_stiffness (
+            closures, alpha.local_element (i), alpha_momentum.local_element (i))) *
         increment[alpha.get_partitioner ()->local_to_global (i)];
   pressure_increment.update_ghost_values ();
   transport.apply_diffusive_fluxes (alpha,
@@ -211,13 +229,23 @@ bool TwoFluidSolver<dim>::correct_solids_pressure (const AlphaVector     &alpha_
  * are damped by ~1/2 per step.
  */
 template <int dim>
-void TwoFluidSolver<dim>::correct_solids_velocity (const AlphaVector     &alpha_momentum,
-                                                   const BDFCoefficients &bdf,
-                                                   const double           dt)
+void SolidsTransport<dim>::correct_solids_velocity (
+    const SolidsTransportInputs<dim> &inputs,
+    const AlphaVector                &alpha,
+    BlockVector                      &flow_solution)
 {
-  TimerOutput::Scope scope (timer, "solids pressure correction");
-  const QGauss<dim>  quadrature (3);
-  FEValues<dim>      flow_values (
+  TimerOutput::Scope                scope (timer, "solids pressure correction");
+  const Mapping<dim>               &mapping           = inputs.mapping;
+  const FiniteElement<dim>         &alpha_fe          = inputs.alpha_fe;
+  const FiniteElement<dim>         &flow_fe           = inputs.flow_fe;
+  const DoFHandler<dim>            &alpha_dof_handler = inputs.alpha_dof_handler;
+  const DoFHandler<dim>            &flow_dof_handler  = inputs.flow_dof_handler;
+  const std::vector<IndexSet>      &flow_owned        = inputs.flow_owned;
+  const closures::ClosureEvaluator &closures          = inputs.closures;
+  const BDFCoefficients            &bdf               = inputs.bdf;
+  const double                      dt                = inputs.dt;
+  const QGauss<dim>                 quadrature (3);
+  FEValues<dim>                     flow_values (
       mapping, flow_fe, quadrature, update_values | update_JxW_values);
   FEValues<dim> alpha_values (
       mapping, alpha_fe, quadrature, update_values | update_gradients);
@@ -239,7 +267,7 @@ void TwoFluidSolver<dim>::correct_solids_velocity (const AlphaVector     &alpha_
     if (cell->is_locally_owned ())
     {
       alpha_cell->get_dof_indices (alpha_dofs);
-      nodal_compaction_stiffness (alpha_dofs, alpha_momentum, slopes);
+      nodal_compaction_stiffness (closures, alpha_dofs, alpha, slopes);
       flow_values.reinit (cell);
       alpha_values.reinit (alpha_cell);
       cell->get_dof_indices (dofs);
@@ -264,7 +292,8 @@ void TwoFluidSolver<dim>::correct_solids_velocity (const AlphaVector     &alpha_
         if (!(a[q] > 1e-12))
           continue;
         const Tensor<1, dim> velocity_change =
-            -compaction_mobility (a[q], ug[q] - us[q], bdf.a0 / dt) / a[q] * grad_w;
+            -compaction_mobility (closures, a[q], ug[q] - us[q], bdf.a0 / dt) / a[q] *
+            grad_w;
         // the gas gives way so that the mixture volume flux is unchanged
         const double gas_share = -a[q] / (1.0 - a[q]);
         // the mixture momentum it adds: alpha_s rho_s du_s + alpha_g rho_g du_g
@@ -291,7 +320,7 @@ void TwoFluidSolver<dim>::correct_solids_velocity (const AlphaVector     &alpha_
   }
   impulse.compress (VectorOperation::add);
   lumped_mass.compress (VectorOperation::add);
-  correction_momentum = Utilities::MPI::sum (momentum, communicator);
+  last_correction_momentum = Utilities::MPI::sum (momentum, communicator);
   // impulse / lumped mass, entry by entry (the mass is positive at every Q2 node)
   for (unsigned int b = 0; b < impulse.n_blocks (); ++b)
     for (const auto i : impulse.block (b).locally_owned_elements ())
@@ -302,22 +331,10 @@ void TwoFluidSolver<dim>::correct_solids_velocity (const AlphaVector     &alpha_
   corrected = flow_solution;
   corrected.add (1.0, impulse);
   // constrained u_s (inlet, wall normal) follow from the corrected unconstrained ones
-  flow_constraints.distribute (corrected);
+  inputs.flow_constraints.distribute (corrected);
   flow_solution = corrected;
 }
 
-template void   TwoFluidSolver<2>::correct_solids_velocity (const AlphaVector &,
-                                                          const BDFCoefficients &,
-                                                          double);
-template void   TwoFluidSolver<3>::correct_solids_velocity (const AlphaVector &,
-                                                          const BDFCoefficients &,
-                                                          double);
-template double TwoFluidSolver<2>::compaction_stiffness (double, double) const;
-template double TwoFluidSolver<3>::compaction_stiffness (double, double) const;
-template bool   TwoFluidSolver<2>::correct_solids_pressure (const AlphaVector &,
-                                                          const BDFCoefficients &,
-                                                          double);
-template bool   TwoFluidSolver<3>::correct_solids_pressure (const AlphaVector &,
-                                                          const BDFCoefficients &,
-                                                          double);
+template class SolidsTransport<2>;
+template class SolidsTransport<3>;
 } // namespace wetbed

@@ -2,7 +2,6 @@
 #include <wetbed/postprocess/bed_profile.h>
 #include <wetbed/postprocess/momentum_budget.h>
 #include <wetbed/postprocess/wall_forces.h>
-#include <wetbed/solvers/wave_speeds.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -106,7 +105,7 @@ MonitorRow evaluate_monitors (const SolverState<dim> &s)
   row.alpha_min = Utilities::MPI::min (lo, s.communicator);
   row.alpha_max = Utilities::MPI::max (hi, s.communicator);
 
-  const WaveSpeeds speeds  = evaluate_wave_speeds (s);
+  const WaveSpeeds &speeds = s.wave_speeds;
   row.gas_speed_max        = speeds.gas;
   row.solids_speed_max     = speeds.solids;
   row.granular_sound_speed = speeds.granular_sound;

@@ -1,4 +1,4 @@
-#include <wetbed/solvers/two_fluid_solver.h>
+#include <wetbed/postprocess/field_output.h>
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
@@ -22,10 +22,28 @@ using namespace dealii;
  * by fields.xdmf (`output/field format`).
  */
 template <int dim>
-void TwoFluidSolver<dim>::write_fields () const
+FieldOutput<dim>::FieldOutput (const Parameters &parameters, TimerOutput &timer)
+    : parameters (parameters), timer (timer)
 {
-  TimerOutput::Scope scope (timer, "output");
-  DataOut<dim>       data_out;
+}
+
+template <int dim>
+void FieldOutput<dim>::write (const SolverState<dim> &s)
+{
+  using AlphaVector                            = typename SolverState<dim>::AlphaVector;
+  const auto                    &triangulation = s.triangulation;
+  const Mapping<dim>            &mapping       = s.mapping;
+  const FiniteElement<dim>      &flow_fe       = s.flow_fe;
+  const FiniteElement<dim>      &alpha_fe      = s.alpha_fe;
+  const DoFHandler<dim>         &flow_dof_handler  = s.flow_dof_handler;
+  const DoFHandler<dim>         &alpha_dof_handler = s.alpha_dof_handler;
+  const AlphaVector             &alpha             = s.alpha;
+  const AlphaVector             &theta             = s.theta;
+  const auto                    &flow_solution     = s.flow_solution;
+  const auto                    &closure_evaluator = s.closures;
+  const closures::KineticTheory *kinetic_theory    = s.kinetic_theory;
+  TimerOutput::Scope             scope (timer, "output");
+  DataOut<dim>                   data_out;
   data_out.attach_triangulation (triangulation);
   std::vector<std::string> names;
   for (unsigned int d = 0; d < dim; ++d)
@@ -132,7 +150,7 @@ void TwoFluidSolver<dim>::write_fields () const
   data_out.build_patches (mapping, 2, DataOut<dim>::curved_inner_cells);
   if (parameters.output.vtu)
     data_out.write_vtu_with_pvtu_record (
-        parameters.output.folder + "/", "fields", output_index, communicator, 5);
+        parameters.output.folder + "/", "fields", count.output_index, s.communicator, 5);
   if (parameters.output.hdf5)
   {
     // one file per output, written collectively; the XDMF index is rewritten each time
@@ -140,66 +158,26 @@ void TwoFluidSolver<dim>::write_fields () const
     // merged between patches: the cell fields (beta, mu_s, level, rank) stay piecewise
     // constant instead of being averaged at shared vertices.
     const std::string name =
-        "fields_" + Utilities::int_to_string (output_index, 5) + ".h5";
+        "fields_" + Utilities::int_to_string (count.output_index, 5) + ".h5";
     DataOutBase::DataOutFilter filter (DataOutBase::DataOutFilterFlags (false, true));
     data_out.write_filtered_data (filter);
     data_out.write_hdf5_parallel (
-        filter, parameters.output.folder + "/" + name, communicator);
-    xdmf_entries.push_back (
-        data_out.create_xdmf_entry (filter, name, time, communicator));
+        filter, parameters.output.folder + "/" + name, s.communicator);
+    count.xdmf_entries.push_back (
+        data_out.create_xdmf_entry (filter, name, s.time, s.communicator));
     data_out.write_xdmf_file (
-        xdmf_entries, parameters.output.folder + "/fields.xdmf", communicator);
+        count.xdmf_entries, parameters.output.folder + "/fields.xdmf", s.communicator);
   }
-  const_cast<TwoFluidSolver<dim> *> (this)->output_index++;
-  const_cast<TwoFluidSolver<dim> *> (this)->next_output_time +=
-      parameters.output.field_interval;
+  ++count.output_index;
+  count.next_output_time += parameters.output.field_interval;
 }
 
 template <int dim>
-typename TwoFluidSolver<dim>::Errors TwoFluidSolver<dim>::compute_errors () const
+bool FieldOutput<dim>::due (const double time) const
 {
-  Assert (manufactured, ExcMessage ("no manufactured solution attached"));
-  const ManufacturedFlowFunction<dim> exact (*manufactured);
-  const QGauss<dim>                   quadrature (5);
-  Vector<float>                       cellwise (triangulation.n_active_cells ());
-  auto                                norm = [&] (const unsigned int          first,
-                   const unsigned int          count,
-                   const VectorTools::NormType type)
-  {
-    ComponentSelectFunction<dim> mask (std::make_pair (first, first + count),
-                                       2 * dim + 1);
-    VectorTools::integrate_difference (mapping,
-                                       flow_dof_handler,
-                                       flow_solution,
-                                       exact,
-                                       cellwise,
-                                       quadrature,
-                                       type,
-                                       &mask);
-    return VectorTools::compute_global_error (triangulation, cellwise, type);
-  };
-  Errors errors{norm (0, dim, VectorTools::L2_norm),
-                norm (0, dim, VectorTools::H1_seminorm),
-                norm (dim, dim, VectorTools::L2_norm),
-                norm (dim, dim, VectorTools::H1_seminorm),
-                norm (2 * dim, 1, VectorTools::L2_norm)};
-  if (manufactured->has_granular_temperature ())
-  {
-    const ManufacturedTemperatureFunction<dim> exact_theta (*manufactured);
-    for (const auto type : {VectorTools::L2_norm, VectorTools::H1_seminorm})
-    {
-      VectorTools::integrate_difference (
-          mapping, alpha_dof_handler, theta, exact_theta, cellwise, quadrature, type);
-      (type == VectorTools::L2_norm ? errors.granular_temperature_l2
-                                    : errors.granular_temperature_h1) =
-          VectorTools::compute_global_error (triangulation, cellwise, type);
-    }
-  }
-  return errors;
+  return parameters.output.field_interval > 0 && time >= count.next_output_time - 1e-12;
 }
 
-template void                      TwoFluidSolver<2>::write_fields () const;
-template void                      TwoFluidSolver<3>::write_fields () const;
-template TwoFluidSolver<2>::Errors TwoFluidSolver<2>::compute_errors () const;
-template TwoFluidSolver<3>::Errors TwoFluidSolver<3>::compute_errors () const;
+template class FieldOutput<2>;
+template class FieldOutput<3>;
 } // namespace wetbed

@@ -1,4 +1,4 @@
-#include <wetbed/solvers/two_fluid_solver.h>
+#include <wetbed/postprocess/point_sampling.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/fe/fe_values.h>
@@ -15,11 +15,16 @@ namespace wetbed
 using namespace dealii;
 
 template <int dim>
-std::vector<std::vector<double>>
-TwoFluidSolver<dim>::sample (const std::vector<Point<dim>> &points) const
+std::vector<std::vector<double>> sample_fields (const SolverState<dim>        &s,
+                                                const std::vector<Point<dim>> &points)
 {
-  const unsigned int  n_values = 2 * dim + 3; // u_g, u_s, p', alpha_s, Theta
-  std::vector<double> values (points.size () * n_values, 0.0),
+  const Mapping<dim>       &mapping           = s.mapping;
+  const FiniteElement<dim> &flow_fe           = s.flow_fe;
+  const FiniteElement<dim> &alpha_fe          = s.alpha_fe;
+  const DoFHandler<dim>    &flow_dof_handler  = s.flow_dof_handler;
+  const DoFHandler<dim>    &alpha_dof_handler = s.alpha_dof_handler;
+  const unsigned int        n_values = 2 * dim + 3; // u_g, u_s, p', alpha_s, Theta
+  std::vector<double>       values (points.size () * n_values, 0.0),
       found (points.size (), 0.0);
   for (unsigned int k = 0; k < points.size (); ++k)
   {
@@ -41,20 +46,20 @@ TwoFluidSolver<dim>::sample (const std::vector<Point<dim>> &points) const
     FEValues<dim>         alpha_values (mapping, alpha_fe, at_point, update_values);
     flow_values.reinit (flow_cell);
     alpha_values.reinit (typename DoFHandler<dim>::active_cell_iterator (
-        &triangulation, flow_cell->level (), flow_cell->index (), &alpha_dof_handler));
+        &s.triangulation, flow_cell->level (), flow_cell->index (), &alpha_dof_handler));
     std::vector<double>         scalar (1);
     std::vector<Vector<double>> flow_at (1, Vector<double> (2 * dim + 1));
-    flow_values.get_function_values (flow_solution, flow_at);
+    flow_values.get_function_values (s.flow_solution, flow_at);
     for (unsigned int c = 0; c < 2 * dim + 1; ++c)
       values[k * n_values + c] = flow_at[0][c];
-    alpha_values.get_function_values (alpha, scalar);
+    alpha_values.get_function_values (s.alpha, scalar);
     values[k * n_values + 2 * dim + 1] = scalar[0];
-    alpha_values.get_function_values (theta, scalar);
+    alpha_values.get_function_values (s.theta, scalar);
     values[k * n_values + 2 * dim + 2] = scalar[0];
     found[k]                           = 1.0;
   }
-  Utilities::MPI::sum (values, communicator, values);
-  Utilities::MPI::sum (found, communicator, found);
+  Utilities::MPI::sum (values, s.communicator, values);
+  Utilities::MPI::sum (found, s.communicator, found);
   std::vector<std::vector<double>> result (points.size ());
   for (unsigned int k = 0; k < points.size (); ++k)
   {
@@ -67,8 +72,8 @@ TwoFluidSolver<dim>::sample (const std::vector<Point<dim>> &points) const
   return result;
 }
 
-template std::vector<std::vector<double>>
-TwoFluidSolver<2>::sample (const std::vector<Point<2>> &) const;
-template std::vector<std::vector<double>>
-TwoFluidSolver<3>::sample (const std::vector<Point<3>> &) const;
+template std::vector<std::vector<double>> sample_fields (const SolverState<2> &,
+                                                         const std::vector<Point<2>> &);
+template std::vector<std::vector<double>> sample_fields (const SolverState<3> &,
+                                                         const std::vector<Point<3>> &);
 } // namespace wetbed

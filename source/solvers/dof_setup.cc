@@ -19,8 +19,8 @@
 /*
  * The degrees of freedom of a mesh: the flow (u_g, u_s | p') in two blocks, the alpha_s
  * and Theta space, their constraints (hanging nodes, periodicity) and sparsity, the
- * transport operator, the flow system for this mesh, and the checks that need the
- * mesh.
+ * transport operator, the flow system for this mesh, the checks that need the mesh, and
+ * the partition's cost model.
  */
 namespace wetbed
 {
@@ -76,17 +76,8 @@ void TwoFluidSolver<dim>::setup_dofs ()
                       boundaries,
                       alpha);
 
-  transport.setup (alpha_dof_handler, mapping, alpha_constraints, alpha);
-
-  {
-    const IndexSet         alpha_owned = alpha_dof_handler.locally_owned_dofs ();
-    DynamicSparsityPattern dsp (alpha_relevant);
-    DoFTools::make_sparsity_pattern (alpha_dof_handler, dsp, alpha_constraints, false);
-    SparsityTools::distribute_sparsity_pattern (
-        dsp, alpha_owned, communicator, alpha_relevant);
-    correction_matrix.reinit (alpha_owned, alpha_owned, dsp, communicator);
-    compaction_flux_matrix.reinit (alpha_owned, alpha_owned, dsp, communicator);
-  }
+  // the transport operator and the correction matrices
+  solids_transport.reinit (mapping, alpha_dof_handler, alpha_constraints, alpha);
   if (kinetic_theory)
     granular_energy.reinit (alpha_dof_handler, alpha_constraints); // PDE: its sparsity
 
@@ -178,6 +169,24 @@ Tensor<1, dim> TwoFluidSolver<dim>::moving_wall_velocity () const
   return velocity;
 }
 
+template <int dim>
+void TwoFluidSolver<dim>::connect_load_balancing ()
+{
+  const Boundaries ids = boundaries;
+  cell_weights         = connect_cell_weights<dim> (triangulation,
+                                            parameters.mesh.wall_face_weight,
+                                            [ids] (const types::boundary_id id)
+                                            { return ids.is_wall (id); });
+  // a fresh mesh is repartitioned by the weights at once; a mesh loaded from a
+  // checkpoint keeps its partition until the next adaptation (repartitioning the loaded
+  // forest crashed in deal.II 9.4's p4est transfer)
+  if (cell_weights.connected () && Utilities::MPI::n_mpi_processes (communicator) > 1 &&
+      !parameters.checkpoint.resume)
+    triangulation.repartition ();
+}
+
+template void TwoFluidSolver<2>::connect_load_balancing ();
+template void TwoFluidSolver<3>::connect_load_balancing ();
 template void TwoFluidSolver<2>::setup_dofs ();
 template void TwoFluidSolver<3>::setup_dofs ();
 template void TwoFluidSolver<2>::measure_mesh ();

@@ -1,4 +1,5 @@
 #include <wetbed/postprocess/bed_monitors.h>
+#include <wetbed/postprocess/point_sampling.h>
 #include <wetbed/postprocess/spectrum.h>
 #include <wetbed/solvers/two_fluid_solver.h>
 
@@ -28,7 +29,7 @@ SolverState<dim> TwoFluidSolver<dim>::state () const
                           flow_dof_handler,
                           alpha_fe,
                           alpha_dof_handler,
-                          transport.lumped_mass (),
+                          solids_transport.lumped_mass (),
                           flow_solution,
                           flow_old2, // after the step the history has shifted
                           alpha,
@@ -45,8 +46,16 @@ SolverState<dim> TwoFluidSolver<dim>::state () const
                           rejected_steps,
                           last_krylov_iterations,
                           initial_solids_mass,
-                          correction_momentum,
-                          granular_energy.budget ()};
+                          solids_transport.correction_momentum (),
+                          granular_energy.budget (),
+                          wave_speeds};
+}
+
+template <int dim>
+std::vector<std::vector<double>>
+TwoFluidSolver<dim>::sample (const std::vector<Point<dim>> &points) const
+{
+  return sample_fields (state (), points);
 }
 
 template <int dim>
@@ -110,12 +119,16 @@ void TwoFluidSolver<dim>::write_spectra () const
 
 template SolverState<2> TwoFluidSolver<2>::state () const;
 template SolverState<3> TwoFluidSolver<3>::state () const;
-template void           TwoFluidSolver<2>::record_monitors ();
-template void           TwoFluidSolver<3>::record_monitors ();
-template void           TwoFluidSolver<2>::make_bubble_analysis ();
-template void           TwoFluidSolver<3>::make_bubble_analysis ();
-template void           TwoFluidSolver<2>::analyse_bubbles ();
-template void           TwoFluidSolver<3>::analyse_bubbles ();
-template void           TwoFluidSolver<2>::write_spectra () const;
-template void           TwoFluidSolver<3>::write_spectra () const;
+template std::vector<std::vector<double>>
+TwoFluidSolver<2>::sample (const std::vector<Point<2>> &) const;
+template std::vector<std::vector<double>>
+              TwoFluidSolver<3>::sample (const std::vector<Point<3>> &) const;
+template void TwoFluidSolver<2>::record_monitors ();
+template void TwoFluidSolver<3>::record_monitors ();
+template void TwoFluidSolver<2>::make_bubble_analysis ();
+template void TwoFluidSolver<3>::make_bubble_analysis ();
+template void TwoFluidSolver<2>::analyse_bubbles ();
+template void TwoFluidSolver<3>::analyse_bubbles ();
+template void TwoFluidSolver<2>::write_spectra () const;
+template void TwoFluidSolver<3>::write_spectra () const;
 } // namespace wetbed

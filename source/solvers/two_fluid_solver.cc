@@ -1,5 +1,6 @@
 #include <wetbed/core/input_error.h>
 #include <wetbed/core/stop_signal.h>
+#include <wetbed/postprocess/bed_monitors.h>
 #include <wetbed/solvers/two_fluid_solver.h>
 #include <wetbed/solvers/wave_speeds.h>
 
@@ -53,11 +54,13 @@ TwoFluidSolver<dim>::TwoFluidSolver (const Parameters &parameters, MPI_Comm comm
                          *solids_stress,
                          gas_particle,
                          parameters.physical.residual_solids_fraction),
-      time_step_controller (parameters.time), time (0),
+      solids_transport (parameters, communicator, timer),
+      time_step_controller (parameters.time), mesh_adaptation (parameters),
+      checkpointing (parameters, communicator, pcout, timer),
+      field_output (parameters, timer), time (0),
       time_step (parameters.time.initial_time_step), previous_time_step (0),
       step_number (0), rejected_steps (0), last_krylov_iterations (0),
-      next_output_time (0), output_index (0), initial_solids_mass (0),
-      min_node_spacing (0)
+      initial_solids_mass (0), min_node_spacing (0)
 {
   inlet_velocity_function.initialize (
       "t", parameters.boundary.inlet_superficial_velocity, {});
@@ -138,10 +141,85 @@ void TwoFluidSolver<dim>::initialize ()
                    Utilities::MPI::this_mpi_process (communicator) == 0,
                    monitor_columns ());
     bubble_analysis->open (folder);
+    update_wave_speeds ();
   }
   if (parameters.checkpoint.on_signal)
     catch_stop_signals ();
   initialized = true;
+}
+
+template <int dim>
+void TwoFluidSolver<dim>::resume_from_checkpoint ()
+{
+  // the checked state, the coarse mesh, the saved mesh and partition, then the DoFs and
+  // the fields on them, in the order the checkpoint was written
+  const CheckpointState saved = checkpointing.read ();
+  boundaries                  = checkpointing.read_coarse_mesh (saved, triangulation);
+  make_wall_conditions ();
+  make_bubble_analysis ();
+  checkpointing.load_mesh (triangulation);
+  connect_load_balancing ();
+  setup_dofs ();
+  FieldTransfer<dim> (flow_dof_handler, alpha_dof_handler)
+      .receive (transferred_fields (), flow_owned, alpha_constraints, true);
+  bubble_analysis->deserialize ();
+
+  time                = saved.time;
+  time_step           = saved.time_step;
+  previous_time_step  = saved.previous_time_step;
+  step_number         = saved.step_number;
+  rejected_steps      = saved.rejected_steps;
+  initial_solids_mass = saved.initial_solids_mass;
+  run_id              = saved.run_id;
+  field_output.restore ({saved.next_output_time, saved.output_index, saved.xdmf_entries});
+  make_flow_constraints (time);
+
+  const std::string output = parameters.output.folder;
+  monitors.reopen (output + "/monitors.csv",
+                   Utilities::MPI::this_mpi_process (communicator) == 0,
+                   saved.monitors_bytes,
+                   monitor_columns ());
+  update_wave_speeds ();
+  monitors.restore (evaluate_monitors (state ()));
+  bubble_analysis->restore_state (saved.bubble_state, output);
+  resumed = true;
+  pcout << "Resumed run " << run_id << " from " << checkpointing.source ()
+        << " at t = " << time << " (step " << step_number << ")" << std::endl;
+}
+
+template <int dim>
+void TwoFluidSolver<dim>::write_checkpoint ()
+{
+  checkpointing.write (
+      state (),
+      transferred_fields (),
+      *bubble_analysis,
+      {time_step, monitors.bytes_written (), run_id, field_output.counters ()});
+}
+
+template <int dim>
+TransferredFields<dim> TwoFluidSolver<dim>::transferred_fields ()
+{
+  return {{{&flow_solution, &flow_old, &flow_old2}},
+          {{&alpha, &alpha_old, &alpha_old2, &theta, &theta_old, &theta_old2}}};
+}
+
+template <int dim>
+void TwoFluidSolver<dim>::adapt_mesh ()
+{
+  // flags from the state, every field and its history moved with the mesh, then the
+  // solids mass the coarsening lost given back (doc/theory.md, "Adaptive meshes")
+  TimerOutput::Scope scope (timer, "adaptive refinement");
+  mesh_adaptation.prepare (state (), triangulation, {{&alpha, &alpha_old, &alpha_old2}});
+  FieldTransfer<dim> transfer (flow_dof_handler, alpha_dof_handler);
+  transfer.attach (transferred_fields (), false);
+  bubble_analysis->prepare_for_mesh_change ();
+  triangulation.execute_coarsening_and_refinement ();
+  setup_dofs ();
+  transfer.receive (transferred_fields (), flow_owned, alpha_constraints, false);
+  bubble_analysis->after_mesh_change ();
+  mesh_adaptation.restore_solids_mass (
+      state (), alpha_constraints, {{&alpha, &alpha_old, &alpha_old2}});
 }
 
 template <int dim>
@@ -281,7 +359,7 @@ void TwoFluidSolver<dim>::set_initial_state ()
   flow_old      = owned_flow;
   flow_old2     = owned_flow;
 
-  initial_solids_mass = solids_mass (alpha);
+  initial_solids_mass = state ().solids_mass (alpha);
 }
 
 template <int dim>
@@ -328,60 +406,11 @@ TwoFluidSolver<dim>::hydrostatic_profile (const std::vector<double> &heights) co
 }
 
 template <int dim>
-double TwoFluidSolver<dim>::solids_mass (const AlphaVector &a) const
-{
-  return state ().solids_mass (a);
-}
-
-template <int dim>
-void TwoFluidSolver<dim>::transport_and_correct_solids (AlphaVector &alpha_momentum,
-                                                        const BDFCoefficients &bdf,
-                                                        const double           dt)
-{
-  // explicit bounded transport from t_n with the midpoint of u_s^n and u_s*
-  {
-    TimerOutput::Scope scope (timer, "alpha transport");
-    alpha_momentum = alpha;
-    alpha_momentum.update_ghost_values ();
-    const FEValuesExtractors::Vector solids (dim);
-    // the transport integrates with QGauss(3) on the alpha cell; the same points on
-    // the flow cell of the same triangulation cell give u_s there
-    FEValues<dim> flow_values (mapping, flow_fe, QGauss<dim> (3), update_values);
-    std::vector<Tensor<1, dim>> u_now, u_before;
-    transport.set_velocity (
-        [&] (const typename DoFHandler<dim>::active_cell_iterator &alpha_cell,
-             const FEValues<dim> & /*alpha_values: QGauss(3) as flow_values*/,
-             std::vector<Tensor<1, dim>> &u)
-        {
-          flow_values.reinit (
-              typename DoFHandler<dim>::active_cell_iterator (&triangulation,
-                                                              alpha_cell->level (),
-                                                              alpha_cell->index (),
-                                                              &flow_dof_handler));
-          u_now.resize (u.size ());
-          u_before.resize (u.size ());
-          flow_values[solids].get_function_values (flow_solution, u_now);
-          flow_values[solids].get_function_values (flow_old, u_before);
-          for (unsigned int i = 0; i < u.size (); ++i)
-            u[i] = 0.5 * (u_now[i] + u_before[i]);
-        });
-    alpha = alpha_old;
-    transport.advance (
-        alpha, dt, parameters.time.transport_cfl, parameters.physical.maximum_packing);
-  }
-  // implicit solids-pressure correction of alpha_s, then of u_s with the same
-  // compaction response, so that velocity and packing stay consistent
-  if (correct_solids_pressure (alpha_momentum, bdf, dt))
-    correct_solids_velocity (alpha_momentum, bdf, dt);
-}
-
-template <int dim>
 bool TwoFluidSolver<dim>::try_time_step (const double dt, const unsigned int bdf_order)
 {
   const BDFCoefficients bdf = bdf_coefficients (bdf_order, dt, previous_time_step);
   make_flow_constraints (time + dt);
   last_krylov_iterations = 0;
-  AlphaVector alpha_momentum (alpha);
   // the granular temperature (PDE or local equilibrium) from the latest alpha_s and u_s;
   // false (rejection_reason) if its solve failed
   const auto update_granular_temperature = [&] ()
@@ -409,7 +438,6 @@ bool TwoFluidSolver<dim>::try_time_step (const double dt, const unsigned int bdf
   for (unsigned int k = 0; k < parameters.time.outer_iterations; ++k)
   {
     solve_history.set_outer_iteration (k);
-    correction_momentum = 0;
     // 1. closures at quadrature points + monolithic (u_g, u_s, p') solve with
     //    P_s(alpha_m) explicit, alpha_m the latest alpha_s (alpha_s^n at k = 0)
     assemble_flow_system (bdf, dt);
@@ -434,7 +462,22 @@ bool TwoFluidSolver<dim>::try_time_step (const double dt, const unsigned int bdf
     }
     // 2.-3. alpha_s transport and compaction correction (held solids: alpha_s stays)
     if (!parameters.boundary.hold_solids)
-      transport_and_correct_solids (alpha_momentum, bdf, dt);
+      solids_transport.advance ({mapping,
+                                 flow_fe,
+                                 flow_dof_handler,
+                                 flow_owned,
+                                 flow_constraints,
+                                 alpha_fe,
+                                 alpha_dof_handler,
+                                 alpha_constraints,
+                                 flow_old,
+                                 alpha_old,
+                                 closure_evaluator,
+                                 bdf,
+                                 dt},
+                                alpha,
+                                flow_solution,
+                                solve_history);
     // 4. granular temperature with the new alpha_s and u_s (PDE or local equilibrium);
     //    it also evolves in a held solids velocity field
     if (kinetic_theory && !update_granular_temperature ())
@@ -470,12 +513,17 @@ bool TwoFluidSolver<dim>::try_time_step (const double dt, const unsigned int bdf
 }
 
 template <int dim>
+void TwoFluidSolver<dim>::update_wave_speeds ()
+{
+  wave_speeds = evaluate_wave_speeds (state ());
+}
+
+template <int dim>
 double TwoFluidSolver<dim>::next_time_step (const double dt) const
 {
   if (!parameters.time.adaptive)
     return dt;
-  return time_step_controller.next (
-      dt, evaluate_wave_speeds (state ()), min_node_spacing);
+  return time_step_controller.next (dt, wave_speeds, min_node_spacing);
 }
 
 template <int dim>
@@ -523,7 +571,7 @@ void TwoFluidSolver<dim>::advance ()
       flow_solution = saved_flow;
       alpha         = alpha_old;
       theta         = theta_old;
-      write_fields ();
+      field_output.write (state ());
       write_checkpoint ();
       throw std::runtime_error ("time step fell below time stepping/minimum time step (" +
                                 std::to_string (ts.minimum_time_step) +
@@ -545,6 +593,7 @@ void TwoFluidSolver<dim>::advance ()
   time += dt;
   previous_time_step = dt;
   ++step_number;
+  update_wave_speeds ();
   const bool last_step = time >= parameters.time.end_time * (1 - 1e-12);
   if (step_number % parameters.output.monitor_interval == 0 || last_step)
     record_monitors ();
@@ -566,7 +615,7 @@ typename TwoFluidSolver<dim>::RunEnd TwoFluidSolver<dim>::run ()
     record_monitors ();
     analyse_bubbles ();
     if (parameters.output.field_interval >= 0)
-      write_fields ();
+      field_output.write (state ());
   }
   const auto &checkpoint = parameters.checkpoint;
   while (time < ts.end_time * (1 - 1e-12))
@@ -576,6 +625,7 @@ typename TwoFluidSolver<dim>::RunEnd TwoFluidSolver<dim>::run ()
         step_number % parameters.adaptive_refinement.interval == 0)
     {
       adapt_mesh ();
+      update_wave_speeds ();
       time_step = next_time_step (previous_time_step); // the CFL of the new mesh
     }
     analyse_bubbles ();
@@ -601,8 +651,8 @@ typename TwoFluidSolver<dim>::RunEnd TwoFluidSolver<dim>::run ()
             << ")" << std::endl;
       return RunEnd::stopped_by_signal;
     }
-    if (parameters.output.field_interval > 0 && time >= next_output_time - 1e-12)
-      write_fields ();
+    if (field_output.due (time))
+      field_output.write (state ());
     if (step_number % parameters.output.progress_interval == 0 ||
         time >= ts.end_time * (1 - 1e-12))
     {
@@ -621,7 +671,7 @@ typename TwoFluidSolver<dim>::RunEnd TwoFluidSolver<dim>::run ()
     }
   }
   if (parameters.output.field_interval == 0)
-    write_fields ();
+    field_output.write (state ());
   if (checkpoint.at_end &&
       !(checkpoint.interval > 0 && step_number % checkpoint.interval == 0))
     write_checkpoint ();

@@ -7,6 +7,7 @@
 #include <wetbed/mesh/boundaries.h>
 #include <wetbed/postprocess/monitors.h>
 #include <wetbed/solvers/flow_system.h>
+#include <wetbed/solvers/time_step_controller.h>
 
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
@@ -65,6 +66,9 @@ struct SolverState
   // iteration (N s, per metre depth in 2D)
   double               correction_momentum;
   GranularEnergyBudget granular_energy; // of the last Theta update
+  // the peak speeds of these fields (evaluate_wave_speeds), evaluated once for each new
+  // state: the time-step controller and monitors.csv read the same
+  WaveSpeeds wave_speeds;
 
   /** The solids mass (kg, per metre depth in 2D) of a field on the alpha_s space;
    * collective. */

@@ -1,7 +1,6 @@
 #pragma once
 
 #include <wetbed/assembly/flow/flow_assembler.h>
-#include <wetbed/assembly/volume_fraction_transport.h>
 #include <wetbed/boundary_conditions/wall_conditions.h>
 #include <wetbed/closures/closure_evaluator.h>
 #include <wetbed/closures/drag/drag_model.h>
@@ -14,18 +13,21 @@
 #include <wetbed/mesh/mesh_input.h>
 #include <wetbed/mesh/partition_independent_triangulation.h>
 #include <wetbed/postprocess/bubble_analysis.h>
+#include <wetbed/postprocess/field_output.h>
 #include <wetbed/postprocess/monitors.h>
+#include <wetbed/solvers/checkpointing.h>
+#include <wetbed/solvers/field_transfer.h>
 #include <wetbed/solvers/flow_system.h>
 #include <wetbed/solvers/granular_energy_solver.h>
+#include <wetbed/solvers/mesh_adaptation.h>
+#include <wetbed/solvers/solids_transport.h>
 #include <wetbed/solvers/solve_history.h>
 #include <wetbed/solvers/solver_state.h>
 #include <wetbed/solvers/time_step_controller.h>
 
 #include <deal.II/base/conditional_ostream.h>
-#include <deal.II/base/data_out_base.h>
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/timer.h>
-#include <deal.II/distributed/solution_transfer.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_q.h>
@@ -72,8 +74,7 @@ public:
    * the saved state (run() calls it). */
   void initialize ();
 
-  /** Saves the run state in <output folder>/checkpoint (source/solvers/checkpoint.cc);
-   * collective. */
+  /** Saves the run state in <output folder>/checkpoint (Checkpointing); collective. */
   void write_checkpoint ();
 
   /** Advances one accepted time step (retrying smaller steps as needed). */
@@ -89,7 +90,8 @@ public:
   Errors compute_errors () const;
 
   /** The fields at the points, each u_g (dim), u_s (dim), p', alpha_s, Theta; NaN
-   * outside the mesh (source/postprocess/point_sampling.cc); collective. */
+   * outside the mesh (sample_fields, source/postprocess/point_sampling.cc);
+   * collective. */
   std::vector<std::vector<double>>
   sample (const std::vector<dealii::Point<dim>> &points) const;
 
@@ -121,42 +123,25 @@ private:
   void make_schur_constraints (const dealii::IndexSet         &relevant,
                                dealii::types::global_dof_index pinned);
   void set_initial_state ();
-  // moving the fields with the mesh (source/solvers/field_transfer.cc)
-  using FlowTransfer = dealii::parallel::distributed::SolutionTransfer<dim, BlockVector>;
-  using ScalarTransfer =
-      dealii::parallel::distributed::SolutionTransfer<dim, AlphaVector>;
-  struct FieldTransfers
-  {
-    std::unique_ptr<FlowTransfer>   flow;
-    std::unique_ptr<ScalarTransfer> scalars;
-  };
   /** The fields a mesh change or a checkpoint carries, in their fixed order. */
-  std::vector<BlockVector *> flow_fields ();
-  std::vector<AlphaVector *> scalar_fields ();
-  /** Attaches every field to the triangulation, for a mesh change or for save(). */
-  FieldTransfers attach_fields (bool for_serialization);
-  /** After the mesh change (or load()) and setup_dofs(): every field on the new mesh,
-   * hanging nodes at their constrained values. */
-  void receive_fields (FieldTransfers &transfers, bool from_checkpoint);
-
-  // adaptive refinement (source/solvers/adaptive_refinement.cc)
-  /** Flags, refines/coarsens, transfers every field and its history, rebuilds. */
+  TransferredFields<dim> transferred_fields ();
+  /** Adapts the mesh (MeshAdaptation), moves every field and its history with it
+   * (FieldTransfer) and rebuilds the DoFs (two_fluid_solver.cc). */
   void adapt_mesh ();
   /** Connects the cell weights (mesh/wall face weight) once the walls are known and,
-   * where they are not uniform on several ranks, repartitions the mesh by them. */
+   * where they are not uniform on several ranks, repartitions the mesh by them
+   * (dof_setup.cc). */
   void connect_load_balancing ();
-  void flag_cells_for_adaptation ();
-  /** Gives `target - sum m a` back to `a` where `candidate` (else anywhere), in
-   * proportion to the room within [0, alpha_max]. */
-  void restore_solids_mass (AlphaVector             &a,
-                            double                   target,
-                            const std::vector<bool> &candidate) const;
   /** Each phase's condition on each wall group, once the mesh's boundaries are known. */
   void make_wall_conditions ();
-  /** Mesh, fields and time-stepping state from the checkpoint (checkpoint.cc). */
+  /** Mesh, fields and time-stepping state from the checkpoint (Checkpointing, its
+   * parts in order; two_fluid_solver.cc). */
   void resume_from_checkpoint ();
   bool try_time_step (double dt, unsigned int bdf_order);
-  /** The next step after one of length dt (TimeStepController, on this state). */
+  /** The peak speeds of the current fields into `wave_speeds` (once for each new
+   * state: after the initial state, each step, each mesh change). */
+  void update_wave_speeds ();
+  /** The next step after one of length dt (TimeStepController, on `wave_speeds`). */
   double next_time_step (double dt) const;
   /** A read-only view of the current state, for the postprocessors and the time-step
    * controller (source/solvers/postprocessing.cc). */
@@ -168,31 +153,7 @@ private:
   /** The flow terms of this case, once the mesh's boundaries are known. */
   std::unique_ptr<FlowAssembler<dim>> make_flow_assembler () const;
   /** The flow system linearised about the current iterate (FlowSystem::assemble). */
-  void   assemble_flow_system (const BDFCoefficients &bdf, double dt);
-  double compaction_stiffness (double alpha_s, double alpha_m) const;
-  /** alpha_s/R: the solids volume flux a unit compaction force gradient drives. */
-  double compaction_mobility (double                        alpha_s,
-                              const dealii::Tensor<1, dim> &slip,
-                              double                        rate) const;
-  /** dP_s/dalpha at the alpha_s nodes of a cell (compaction_stiffness node by node). */
-  void
-  nodal_compaction_stiffness (const std::vector<dealii::types::global_dof_index> &dofs,
-                              const AlphaVector   &alpha_momentum,
-                              std::vector<double> &slopes) const;
-  /** Explicit bounded alpha_s transport from t_n with the midpoint of u_s^n and u_s*,
-   * then the implicit solids-pressure correction of alpha_s and u_s; alpha_momentum
-   * receives the alpha_s the momentum solve saw. */
-  void transport_and_correct_solids (AlphaVector           &alpha_momentum,
-                                     const BDFCoefficients &bdf,
-                                     double                 dt);
-  /** Returns false where no compacted region exists (nothing was done). */
-  bool correct_solids_pressure (const AlphaVector     &alpha_momentum,
-                                const BDFCoefficients &bdf,
-                                double                 dt);
-  /** u_s += -P_s'(alpha) / (a0 alpha_s rho_s / dt + beta) grad (alpha - alpha_m). */
-  void correct_solids_velocity (const AlphaVector     &alpha_momentum,
-                                const BDFCoefficients &bdf,
-                                double                 dt);
+  void assemble_flow_system (const BDFCoefficients &bdf, double dt);
 
   // postprocessing: the components in source/postprocess/ read state(); their
   // orchestration (source/solvers/postprocessing.cc)
@@ -206,7 +167,6 @@ private:
   /** spectrum.csv from monitors.csv, at the end of a run that lasted past the spectrum
    * start time (rank 0). */
   void write_spectra () const;
-  void write_fields () const;
 
   /** The cause of the last rejection and where the failed state is extreme
    * (source/solvers/failure_report.cc); collective. */
@@ -219,7 +179,6 @@ private:
                               dealii::AffineConstraints<double> &constraints) const;
   /** The velocity of the moving wall in the mesh's dimensions (zero without one). */
   dealii::Tensor<1, dim> moving_wall_velocity () const;
-  double                 solids_mass (const AlphaVector &alpha) const;
   /** (height, alpha_s) of the discrete rest state at the given vertex heights, top down.
    */
   std::vector<std::pair<double, double>>
@@ -266,28 +225,27 @@ private:
   dealii::FunctionParser<3> held_velocity_function{3}; // u_s(x, y, z, t) where held
   std::shared_ptr<ManufacturedSolution<dim>> manufactured;
 
-  VolumeFractionTransport<dim> transport;
-  TimeStepController           time_step_controller;
-  // compaction correction: M_L + dt K diag(P'_j) (solved) and dt K (the edge fluxes)
-  dealii::TrilinosWrappers::SparseMatrix correction_matrix, compaction_flux_matrix;
-  // vertical mixture momentum the velocity half of the compaction correction added in
-  // the last outer iteration (N s, per metre depth in 2D), for the momentum budget
-  double correction_momentum = 0;
+  // the alpha_s transport and compaction correction, its operators and the momentum
+  // its velocity correction added
+  SolidsTransport<dim> solids_transport;
+  TimeStepController   time_step_controller;
+
+  MeshAdaptation<dim> mesh_adaptation;
+  Checkpointing<dim>  checkpointing;
 
   Monitors                             monitors;
   std::unique_ptr<BubbleAnalysis<dim>> bubble_analysis;
-  double                               time, time_step, previous_time_step;
-  unsigned int step_number, rejected_steps, last_krylov_iterations;
-  double       next_output_time;
-  unsigned int output_index;
-  // the XDMF index of the HDF5 outputs written so far (rewritten at each output)
-  mutable std::vector<dealii::XDMFEntry> xdmf_entries;
-  double                                 initial_solids_mass;
-  double                                 min_node_spacing;
-  bool                                   initialized = false;
-  bool         resumed = false;  // the state came from a checkpoint
-  std::string  run_id;           // new for each run, kept by its resumes
-  std::string  rejection_reason; // why the last attempted step was rejected
-  SolveHistory solve_history;    // the linear solves of the current step
+  // the field files and their counters
+  FieldOutput<dim> field_output;
+  double           time, time_step, previous_time_step;
+  unsigned int     step_number, rejected_steps, last_krylov_iterations;
+  WaveSpeeds       wave_speeds; // of the current fields (update_wave_speeds)
+  double           initial_solids_mass;
+  double           min_node_spacing;
+  bool             initialized = false;
+  bool             resumed     = false; // the state came from a checkpoint
+  std::string      run_id;              // new for each run, kept by its resumes
+  std::string      rejection_reason;    // why the last attempted step was rejected
+  SolveHistory     solve_history;       // the linear solves of the current step
 };
 } // namespace wetbed

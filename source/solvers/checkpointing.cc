@@ -1,7 +1,6 @@
 #include <wetbed/core/input_error.h>
 #include <wetbed/mesh/mesh_input.h>
-#include <wetbed/postprocess/bed_monitors.h>
-#include <wetbed/solvers/two_fluid_solver.h>
+#include <wetbed/solvers/checkpointing.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -44,38 +43,6 @@ using namespace dealii;
 
 namespace
 {
-constexpr unsigned int checkpoint_format = 3;
-
-/** Everything a resumed run needs besides the mesh and the fields. */
-struct CheckpointState
-{
-  unsigned int                   format = checkpoint_format, dimension = 0;
-  std::string                    mesh_file;
-  double                         time = 0, time_step = 0, previous_time_step = 0;
-  unsigned int                   step_number = 0, rejected_steps = 0;
-  double                         next_output_time    = 0;
-  unsigned int                   output_index        = 0;
-  double                         initial_solids_mass = 0;
-  unsigned long long             monitors_bytes      = 0;
-  std::vector<dealii::XDMFEntry> xdmf_entries;
-  std::string                    bubble_state; // the tracker and the bubble CSV lengths
-  // (name, FNV-1a hash of the contents) of every file of the saved triangulation
-  std::vector<std::pair<std::string, unsigned long long>> files;
-  // the identity of the run
-  std::string        run_id;
-  unsigned long long mesh_file_hash = 0, coarse_mesh_hash = 0, monitors_hash = 0;
-  std::vector<std::pair<std::string, std::string>> parameters;
-
-  template <class Archive>
-  void serialize (Archive &archive, const unsigned int)
-  {
-    archive &format &dimension &mesh_file &time &time_step &previous_time_step;
-    archive &step_number &rejected_steps &next_output_time &output_index;
-    archive &initial_solids_mass &monitors_bytes &xdmf_entries &bubble_state &files;
-    archive &run_id &mesh_file_hash &coarse_mesh_hash &monitors_hash         &parameters;
-  }
-};
-
 /** The parameters that may differ on resume: when the run ends, how it steps and
  * solves, what and how often it writes, how the mesh is partitioned, and the
  * checkpoints themselves; everything else defines the discrete problem or the files
@@ -212,7 +179,19 @@ std::string checkpoint_folder (const std::string &output_folder, const char *whi
 } // namespace
 
 template <int dim>
-void TwoFluidSolver<dim>::write_checkpoint ()
+Checkpointing<dim>::Checkpointing (const Parameters   &parameters,
+                                   MPI_Comm            communicator,
+                                   ConditionalOStream &pcout,
+                                   TimerOutput        &timer)
+    : parameters (parameters), communicator (communicator), pcout (pcout), timer (timer)
+{
+}
+
+template <int dim>
+void Checkpointing<dim>::write (const SolverState<dim>       &s,
+                                const TransferredFields<dim> &fields,
+                                BubbleAnalysis<dim>          &bubbles,
+                                const RunRecord              &record)
 {
   TimerOutput::Scope scope (timer, "checkpoint");
   const bool         root     = Utilities::MPI::this_mpi_process (communicator) == 0;
@@ -224,8 +203,8 @@ void TwoFluidSolver<dim>::write_checkpoint ()
   // more and 64 kB for the forest and the state; refused on every rank together
   // (status 3), the previous checkpoint kept
   const double needed =
-      1.1 * 8.0 * triangulation.n_global_active_cells () *
-          (3.0 * flow_fe.n_dofs_per_cell () + 6.0 * alpha_fe.n_dofs_per_cell ()) +
+      1.1 * 8.0 * s.triangulation.n_global_active_cells () *
+          (3.0 * s.flow_fe.n_dofs_per_cell () + 6.0 * s.alpha_fe.n_dofs_per_cell ()) +
       65536.0;
   double available = 0;
   if (root)
@@ -240,7 +219,7 @@ void TwoFluidSolver<dim>::write_checkpoint ()
   if (available < needed)
     throw std::runtime_error ("output/folder: no room for a checkpoint in '" +
                               parameters.output.folder +
-                              "' at t = " + std::to_string (time) + " (needs ~" +
+                              "' at t = " + std::to_string (s.time) + " (needs ~" +
                               std::to_string (needed / 1048576.0) + " MB, " +
                               std::to_string (available / 1048576.0) +
                               " MB free); the previous checkpoint is kept");
@@ -251,39 +230,30 @@ void TwoFluidSolver<dim>::write_checkpoint ()
   }
   MPI_Barrier (communicator);
 
-  // the order of the transfers is the order in which resume() reads them back
-  for (AlphaVector *v :
-       {&alpha, &alpha_old, &alpha_old2, &theta, &theta_old, &theta_old2})
-    v->update_ghost_values ();
-  parallel::distributed::SolutionTransfer<dim, BlockVector> flow_transfer (
-      flow_dof_handler);
-  flow_transfer.prepare_for_serialization (
-      std::vector<const BlockVector *>{&flow_solution, &flow_old, &flow_old2});
-  parallel::distributed::SolutionTransfer<dim, AlphaVector> scalar_transfer (
-      alpha_dof_handler);
-  scalar_transfer.prepare_for_serialization (std::vector<const AlphaVector *>{
-      &alpha, &alpha_old, &alpha_old2, &theta, &theta_old, &theta_old2});
-  bubble_analysis->prepare_for_serialization ();
-  triangulation.save (partial + "/triangulation");
+  // the order of the transfers is the order in which a resume reads them back
+  FieldTransfer<dim> transfer (s.flow_dof_handler, s.alpha_dof_handler);
+  transfer.attach (fields, true);
+  bubbles.prepare_for_serialization ();
+  s.triangulation.save (partial + "/triangulation");
 
   CheckpointState state;
   state.dimension           = dim;
   state.mesh_file           = parameters.mesh.file;
-  state.time                = time;
-  state.time_step           = time_step;
-  state.previous_time_step  = previous_time_step;
-  state.step_number         = step_number;
-  state.rejected_steps      = rejected_steps;
-  state.next_output_time    = next_output_time;
-  state.output_index        = output_index;
-  state.initial_solids_mass = initial_solids_mass;
-  state.monitors_bytes      = monitors.bytes_written ();
-  state.xdmf_entries        = xdmf_entries;
-  state.bubble_state        = bubble_analysis->saved_state ();
-  state.run_id              = run_id;
+  state.time                = s.time;
+  state.time_step           = record.next_time_step;
+  state.previous_time_step  = s.time_step;
+  state.step_number         = s.step_number;
+  state.rejected_steps      = s.rejected_steps;
+  state.next_output_time    = record.outputs.next_output_time;
+  state.output_index        = record.outputs.output_index;
+  state.initial_solids_mass = s.initial_solids_mass;
+  state.monitors_bytes      = record.monitors_bytes;
+  state.xdmf_entries        = record.outputs.xdmf_entries;
+  state.bubble_state        = bubbles.saved_state ();
+  state.run_id              = record.run_id;
   state.mesh_file_hash =
       file_hash (check_mesh_file (parameters.mesh, parameters.parameter_file_directory));
-  state.coarse_mesh_hash = coarse_mesh_hash<dim> (triangulation);
+  state.coarse_mesh_hash = coarse_mesh_hash<dim> (s.triangulation);
   state.parameters       = parameters.values;
   MPI_Barrier (communicator);
   if (root)
@@ -315,16 +285,16 @@ void TwoFluidSolver<dim>::write_checkpoint ()
     std::filesystem::remove_all (previous);
   }
   MPI_Barrier (communicator);
-  pcout << "  checkpoint written at t = " << time << " (step " << step_number << ")"
+  pcout << "  checkpoint written at t = " << s.time << " (step " << s.step_number << ")"
         << std::endl;
 }
 
 template <int dim>
-void TwoFluidSolver<dim>::resume_from_checkpoint ()
+CheckpointState Checkpointing<dim>::read ()
 {
   const std::string output = parameters.output.folder;
-  std::string       folder = checkpoint_folder (output);
-  // a crash between the two renames of write_checkpoint() leaves only the previous one
+  folder                   = checkpoint_folder (output);
+  // a crash between the two renames of write() leaves only the previous one
   if (!std::filesystem::is_regular_file (folder + "/state") &&
       std::filesystem::is_regular_file (checkpoint_folder (output, ".previous") +
                                         "/state"))
@@ -358,7 +328,7 @@ void TwoFluidSolver<dim>::resume_from_checkpoint ()
     throw InputError ("checkpoint/resume",
                       "'" + folder + "/state' is not a readable wetbed checkpoint");
   }
-  require (state.format == checkpoint_format,
+  require (state.format == CheckpointState::current_format,
            "checkpoint/resume",
            "'" + folder + "' was written by another checkpoint format version");
   require (state.dimension == dim,
@@ -379,21 +349,33 @@ void TwoFluidSolver<dim>::resume_from_checkpoint ()
   require (!state.files.empty (),
            "checkpoint/resume",
            "'" + folder + "/state' lists no mesh files");
+  return state;
+}
 
+template <int dim>
+Boundaries Checkpointing<dim>::read_coarse_mesh (
+    const CheckpointState                     &saved,
+    parallel::distributed::Triangulation<dim> &triangulation) const
+{
   // the coarse mesh of the case, then the saved refinement and partition
-  MeshParameters coarse     = parameters.mesh;
-  coarse.initial_refinement = 0;
-  boundaries                = read_mesh<dim> (coarse,
-                               parameters.boundary.moving_wall_name,
-                               parameters.parameter_file_directory,
-                               output,
-                               parameters.physical.gravity,
-                               triangulation);
-  require (coarse_mesh_hash<dim> (triangulation) == state.coarse_mesh_hash,
+  MeshParameters coarse       = parameters.mesh;
+  coarse.initial_refinement   = 0;
+  const Boundaries boundaries = read_mesh<dim> (coarse,
+                                                parameters.boundary.moving_wall_name,
+                                                parameters.parameter_file_directory,
+                                                parameters.output.folder,
+                                                parameters.physical.gravity,
+                                                triangulation);
+  require (coarse_mesh_hash<dim> (triangulation) == saved.coarse_mesh_hash,
            "checkpoint/resume",
            "the mesh made from mesh/file differs from the one of the checkpoint's run");
-  make_wall_conditions ();
-  make_bubble_analysis ();
+  return boundaries;
+}
+
+template <int dim>
+void Checkpointing<dim>::load_mesh (
+    parallel::distributed::Triangulation<dim> &triangulation) const
+{
   try
   {
     triangulation.load (folder + "/triangulation");
@@ -405,41 +387,8 @@ void TwoFluidSolver<dim>::resume_from_checkpoint ()
                           "' cannot be loaded (corrupt, or not "
                           "made from mesh/file)");
   }
-  connect_load_balancing ();
-  setup_dofs ();
-
-  {
-    FieldTransfers transfers{std::make_unique<FlowTransfer> (flow_dof_handler),
-                             std::make_unique<ScalarTransfer> (alpha_dof_handler)};
-    receive_fields (transfers, true);
-  }
-  bubble_analysis->deserialize ();
-
-  time                = state.time;
-  time_step           = state.time_step;
-  previous_time_step  = state.previous_time_step;
-  step_number         = state.step_number;
-  rejected_steps      = state.rejected_steps;
-  next_output_time    = state.next_output_time;
-  output_index        = state.output_index;
-  initial_solids_mass = state.initial_solids_mass;
-  xdmf_entries        = state.xdmf_entries;
-  run_id              = state.run_id;
-  make_flow_constraints (time);
-
-  monitors.reopen (output + "/monitors.csv",
-                   Utilities::MPI::this_mpi_process (communicator) == 0,
-                   state.monitors_bytes,
-                   monitor_columns ());
-  monitors.restore (evaluate_monitors (this->state ()));
-  bubble_analysis->restore_state (state.bubble_state, output);
-  resumed = true;
-  pcout << "Resumed run " << run_id << " from " << folder << " at t = " << time
-        << " (step " << step_number << ")" << std::endl;
 }
 
-template void TwoFluidSolver<2>::write_checkpoint ();
-template void TwoFluidSolver<3>::write_checkpoint ();
-template void TwoFluidSolver<2>::resume_from_checkpoint ();
-template void TwoFluidSolver<3>::resume_from_checkpoint ();
+template class Checkpointing<2>;
+template class Checkpointing<3>;
 } // namespace wetbed

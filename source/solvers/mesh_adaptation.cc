@@ -1,4 +1,4 @@
-#include <wetbed/solvers/two_fluid_solver.h>
+#include <wetbed/solvers/mesh_adaptation.h>
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -31,20 +31,22 @@ namespace wetbed
 using namespace dealii;
 
 template <int dim>
-void TwoFluidSolver<dim>::flag_cells_for_adaptation ()
+void MeshAdaptation<dim>::flag_cells (
+    const SolverState<dim>                    &s,
+    parallel::distributed::Triangulation<dim> &triangulation) const
 {
   const auto   &amr = parameters.adaptive_refinement;
   Vector<float> indicator (triangulation.n_active_cells ());
   {
-    const QGauss<dim>           quadrature (2);
-    FEValues<dim>               values (mapping, alpha_fe, quadrature, update_gradients);
+    const QGauss<dim> quadrature (2);
+    FEValues<dim>     values (s.mapping, s.alpha_fe, quadrature, update_gradients);
     std::vector<Tensor<1, dim>> gradients (quadrature.size ());
     const double                alpha_max = parameters.physical.maximum_packing;
-    for (const auto &cell : alpha_dof_handler.active_cell_iterators ())
+    for (const auto &cell : s.alpha_dof_handler.active_cell_iterators ())
       if (cell->is_locally_owned ())
       {
         values.reinit (cell);
-        values.get_function_gradients (alpha, gradients);
+        values.get_function_gradients (s.alpha, gradients);
         double largest = 0;
         for (const auto &g : gradients)
           largest = std::max (largest, g.norm ());
@@ -57,11 +59,16 @@ void TwoFluidSolver<dim>::flag_cells_for_adaptation ()
     ComponentMask solids (2 * dim + 1, false);
     for (unsigned int d = 0; d < dim; ++d)
       solids.set (dim + d, true);
-    KellyErrorEstimator<dim>::estimate (
-        mapping, flow_dof_handler, QGauss<dim - 1> (3), {}, flow_solution, kelly, solids);
+    KellyErrorEstimator<dim>::estimate (s.mapping,
+                                        s.flow_dof_handler,
+                                        QGauss<dim - 1> (3),
+                                        {},
+                                        s.flow_solution,
+                                        kelly,
+                                        solids);
     const double largest = Utilities::MPI::max (
         static_cast<double> (*std::max_element (kelly.begin (), kelly.end ())),
-        communicator);
+        s.communicator);
     if (largest > 0)
       for (unsigned int k = 0; k < kelly.size (); ++k)
         indicator (k) += amr.velocity_weight * kelly (k) / largest;
@@ -95,15 +102,17 @@ void TwoFluidSolver<dim>::flag_cells_for_adaptation ()
 }
 
 template <int dim>
-void TwoFluidSolver<dim>::restore_solids_mass (AlphaVector             &a,
-                                               const double             target,
-                                               const std::vector<bool> &candidate) const
+void MeshAdaptation<dim>::restore (const SolverState<dim>          &s,
+                                   const AffineConstraints<double> &alpha_constraints,
+                                   AlphaVector                     &a,
+                                   const double                     target,
+                                   const std::vector<bool>         &candidate) const
 {
   // sum_i m_i a_i is int alpha_h (condensed lumped mass, hanging nodes included)
-  const auto  &m         = transport.lumped_mass ();
+  const auto  &m         = s.lumped_mass;
   const double alpha_max = parameters.physical.maximum_packing;
   const double deficit =
-      (target - solids_mass (a)) / parameters.physical.particle_density; // volume
+      (target - s.solids_mass (a)) / parameters.physical.particle_density; // volume
   // room: below alpha_max to add mass, above 0 to remove it; on the coarsened cells'
   // nodes, or everywhere if they cannot take it (with any room at all)
   auto room = [&] (const unsigned int i)
@@ -119,7 +128,7 @@ void TwoFluidSolver<dim>::restore_solids_mass (AlphaVector             &a,
     for (unsigned int i = 0; i < a.locally_owned_size (); ++i)
       if (!restrict_to_candidates || candidate[i])
         capacity += m.local_element (i) * room (i);
-    capacity = Utilities::MPI::sum (capacity, communicator);
+    capacity = Utilities::MPI::sum (capacity, s.communicator);
     if (capacity <= 2.0 * std::abs (deficit) && restrict_to_candidates)
       continue;
     if (capacity <= 0)
@@ -136,10 +145,18 @@ void TwoFluidSolver<dim>::restore_solids_mass (AlphaVector             &a,
 }
 
 template <int dim>
-void TwoFluidSolver<dim>::adapt_mesh ()
+MeshAdaptation<dim>::MeshAdaptation (const Parameters &parameters)
+    : parameters (parameters)
 {
-  TimerOutput::Scope scope (timer, "adaptive refinement");
-  flag_cells_for_adaptation ();
+}
+
+template <int dim>
+void MeshAdaptation<dim>::prepare (
+    const SolverState<dim>                    &s,
+    parallel::distributed::Triangulation<dim> &triangulation,
+    const std::array<const AlphaVector *, 3>  &alpha_levels)
+{
+  flag_cells (s, triangulation);
   triangulation.prepare_coarsening_and_refinement ();
 
   // the parents of the cells to be coarsened (they will be active, maybe elsewhere)
@@ -150,27 +167,25 @@ void TwoFluidSolver<dim>::adapt_mesh ()
   std::sort (coarsened_local.begin (), coarsened_local.end ());
   coarsened_local.erase (std::unique (coarsened_local.begin (), coarsened_local.end ()),
                          coarsened_local.end ());
-  std::set<std::string> coarsened;
-  for (const auto &part : Utilities::MPI::all_gather (communicator, coarsened_local))
+  coarsened.clear ();
+  for (const auto &part : Utilities::MPI::all_gather (s.communicator, coarsened_local))
     coarsened.insert (part.begin (), part.end ());
-
-  FieldTransfers transfers = attach_fields (false);
-  const auto     scalars   = scalar_fields (); // alpha_s^{n+1}, ^n, ^{n-1} first
-  double         masses[3];
   for (unsigned int k = 0; k < 3; ++k)
-    masses[k] = solids_mass (*scalars[k]);
+    masses[k] = s.solids_mass (*alpha_levels[k]);
+}
 
-  bubble_analysis->prepare_for_mesh_change ();
-  triangulation.execute_coarsening_and_refinement ();
-  setup_dofs ();
-  receive_fields (transfers, false);
-  bubble_analysis->after_mesh_change ();
-
+template <int dim>
+void MeshAdaptation<dim>::restore_solids_mass (
+    const SolverState<dim>             &s,
+    const AffineConstraints<double>    &alpha_constraints,
+    const std::array<AlphaVector *, 3> &alpha_levels) const
+{
   // the nodes of the coarsened cells, where the coarsening deficit is given back
+  const AlphaVector                   &alpha = *alpha_levels[0];
   std::vector<bool>                    candidate (alpha.locally_owned_size (), false);
-  std::vector<types::global_dof_index> dofs (alpha_fe.n_dofs_per_cell ());
+  std::vector<types::global_dof_index> dofs (s.alpha_fe.n_dofs_per_cell ());
   const IndexSet                       owned = alpha.locally_owned_elements ();
-  for (const auto &cell : alpha_dof_handler.active_cell_iterators ())
+  for (const auto &cell : s.alpha_dof_handler.active_cell_iterators ())
     if (!cell->is_artificial () && coarsened.count (cell->id ().to_string ()))
     {
       cell->get_dof_indices (dofs);
@@ -179,35 +194,9 @@ void TwoFluidSolver<dim>::adapt_mesh ()
           candidate[alpha.get_partitioner ()->global_to_local (dof)] = true;
     }
   for (unsigned int k = 0; k < 3; ++k)
-    restore_solids_mass (*scalars[k], masses[k], candidate);
+    restore (s, alpha_constraints, *alpha_levels[k], masses[k], candidate);
 }
 
-template <int dim>
-void TwoFluidSolver<dim>::connect_load_balancing ()
-{
-  const Boundaries ids = boundaries;
-  cell_weights         = connect_cell_weights<dim> (triangulation,
-                                            parameters.mesh.wall_face_weight,
-                                            [ids] (const types::boundary_id id)
-                                            { return ids.is_wall (id); });
-  // a fresh mesh is repartitioned by the weights at once; a mesh loaded from a
-  // checkpoint keeps its partition until the next adaptation (repartitioning the loaded
-  // forest crashed in deal.II 9.4's p4est transfer)
-  if (cell_weights.connected () && Utilities::MPI::n_mpi_processes (communicator) > 1 &&
-      !parameters.checkpoint.resume)
-    triangulation.repartition ();
-}
-
-template void TwoFluidSolver<2>::connect_load_balancing ();
-template void TwoFluidSolver<3>::connect_load_balancing ();
-template void TwoFluidSolver<2>::adapt_mesh ();
-template void TwoFluidSolver<3>::adapt_mesh ();
-template void TwoFluidSolver<2>::flag_cells_for_adaptation ();
-template void TwoFluidSolver<3>::flag_cells_for_adaptation ();
-template void TwoFluidSolver<2>::restore_solids_mass (AlphaVector &,
-                                                      double,
-                                                      const std::vector<bool> &) const;
-template void TwoFluidSolver<3>::restore_solids_mass (AlphaVector &,
-                                                      double,
-                                                      const std::vector<bool> &) const;
+template class MeshAdaptation<2>;
+template class MeshAdaptation<3>;
 } // namespace wetbed

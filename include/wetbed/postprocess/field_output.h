@@ -1,0 +1,50 @@
+#pragma once
+
+#include <wetbed/core/parameters.h>
+#include <wetbed/solvers/solver_state.h>
+
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/base/timer.h>
+
+#include <vector>
+
+namespace wetbed
+{
+/**
+ * The field files as a component: u_g, u_s, p', alpha_s, alpha_g, P_s, Theta and the
+ * cell means of the closures, as VTU pieces with a PVTU record and/or one parallel HDF5
+ * file per output indexed by fields.xdmf (`output/field format`). It reads the state
+ * through SolverState and writes only the files and its own counters (the next output
+ * time, the output index and the XDMF index), which a checkpoint keeps
+ * (source/postprocess/field_output.cc).
+ */
+template <int dim>
+class FieldOutput
+{
+public:
+  /** What a checkpoint saves of the outputs so far. */
+  struct Counters
+  {
+    double                         next_output_time = 0;
+    unsigned int                   output_index     = 0;
+    std::vector<dealii::XDMFEntry> xdmf_entries; // the HDF5 outputs written so far
+  };
+
+  FieldOutput (const Parameters &parameters, dealii::TimerOutput &timer);
+
+  /** Writes the fields of `state` and counts the output; collective. */
+  void write (const SolverState<dim> &state);
+
+  /** Whether an output is due at `time` (every `output/field interval` > 0 s). */
+  bool due (double time) const;
+
+  const Counters &counters () const { return count; }
+  /** The counters of a resumed run, from its checkpoint. */
+  void restore (const Counters &saved) { count = saved; }
+
+private:
+  const Parameters    &parameters;
+  dealii::TimerOutput &timer;
+  Counters             count;
+};
+} // namespace wetbed

@@ -1,0 +1,90 @@
+#include <wetbed/solvers/solids_transport.h>
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
+
+namespace wetbed
+{
+using namespace dealii;
+
+template <int dim>
+SolidsTransport<dim>::SolidsTransport (const Parameters &parameters,
+                                       MPI_Comm          communicator,
+                                       TimerOutput      &timer)
+    : parameters (parameters), communicator (communicator), timer (timer)
+{
+}
+
+template <int dim>
+void SolidsTransport<dim>::reinit (const Mapping<dim>              &mapping,
+                                   const DoFHandler<dim>           &alpha_dof_handler,
+                                   const AffineConstraints<double> &alpha_constraints,
+                                   const AlphaVector               &layout)
+{
+  transport.setup (alpha_dof_handler, mapping, alpha_constraints, layout);
+  alpha_momentum.reinit (layout);
+  const IndexSet alpha_owned = alpha_dof_handler.locally_owned_dofs ();
+  const IndexSet alpha_relevant =
+      DoFTools::extract_locally_relevant_dofs (alpha_dof_handler);
+  DynamicSparsityPattern dsp (alpha_relevant);
+  DoFTools::make_sparsity_pattern (alpha_dof_handler, dsp, alpha_constraints, false);
+  SparsityTools::distribute_sparsity_pattern (
+      dsp, alpha_owned, communicator, alpha_relevant);
+  correction_matrix.reinit (alpha_owned, alpha_owned, dsp, communicator);
+  compaction_flux_matrix.reinit (alpha_owned, alpha_owned, dsp, communicator);
+}
+
+template <int dim>
+void SolidsTransport<dim>::advance (const SolidsTransportInputs<dim> &inputs,
+                                    AlphaVector                      &alpha,
+                                    BlockVector                      &flow_solution,
+                                    SolveHistory                     &history)
+{
+  last_correction_momentum = 0;
+  // explicit bounded transport from t_n with the midpoint of u_s^n and u_s*
+  // (doc/theory.md, "One time step", step 2)
+  {
+    TimerOutput::Scope scope (timer, "alpha transport");
+    alpha_momentum = alpha;
+    alpha_momentum.update_ghost_values ();
+    const FEValuesExtractors::Vector solids (dim);
+    // the transport integrates with QGauss(3) on the alpha cell; the same points on
+    // the flow cell of the same triangulation cell give u_s there
+    FEValues<dim> flow_values (
+        inputs.mapping, inputs.flow_fe, QGauss<dim> (3), update_values);
+    std::vector<Tensor<1, dim>> u_now, u_before;
+    transport.set_velocity (
+        [&] (const typename DoFHandler<dim>::active_cell_iterator &alpha_cell,
+             const FEValues<dim> & /*alpha_values: QGauss(3) as flow_values*/,
+             std::vector<Tensor<1, dim>> &u)
+        {
+          flow_values.reinit (typename DoFHandler<dim>::active_cell_iterator (
+              &inputs.flow_dof_handler.get_triangulation (),
+              alpha_cell->level (),
+              alpha_cell->index (),
+              &inputs.flow_dof_handler));
+          u_now.resize (u.size ());
+          u_before.resize (u.size ());
+          flow_values[solids].get_function_values (flow_solution, u_now);
+          flow_values[solids].get_function_values (inputs.flow_old, u_before);
+          for (unsigned int i = 0; i < u.size (); ++i)
+            u[i] = 0.5 * (u_now[i] + u_before[i]);
+        });
+    alpha = inputs.alpha_old;
+    transport.advance (alpha,
+                       inputs.dt,
+                       parameters.time.transport_cfl,
+                       parameters.physical.maximum_packing);
+  }
+  // implicit solids-pressure correction of alpha_s, then of u_s with the same
+  // compaction response, so that velocity and packing stay consistent (steps 3-4)
+  if (correct_solids_pressure (inputs, flow_solution, alpha, history))
+    correct_solids_velocity (inputs, alpha, flow_solution);
+}
+
+template class SolidsTransport<2>;
+template class SolidsTransport<3>;
+} // namespace wetbed
