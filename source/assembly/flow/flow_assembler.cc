@@ -142,20 +142,28 @@ void FlowAssembler<dim>::local_system (const CellIterator           &cell,
     term->cell (scratch, state, copy);
   for (const unsigned int f : cell->face_indices ())
   {
-    if (!cell->face (f)->at_boundary ())
+    if (!face_has_terms (cell, f))
       continue;
-    const auto id     = cell->face (f)->boundary_id ();
-    bool       needed = false;
-    for (const auto &term : terms)
-      needed = needed || term->acts_on_boundary (id);
-    if (!needed)
-      continue;
+    const auto id = cell->face (f)->boundary_id ();
     prepare_face (cell, f, state, scratch);
     for (const auto &term : terms)
       if (term->acts_on_boundary (id))
         term->face (cell, f, scratch, state, copy);
   }
   copy.captured = cell->at_boundary ();
+}
+
+template <int dim>
+bool FlowAssembler<dim>::face_has_terms (const CellIterator &cell,
+                                         const unsigned int  f) const
+{
+  if (!cell->face (f)->at_boundary ())
+    return false;
+  const auto id = cell->face (f)->boundary_id ();
+  for (const auto &term : terms)
+    if (term->acts_on_boundary (id))
+      return true;
+  return false;
 }
 
 template <int dim>
@@ -194,14 +202,9 @@ void FlowAssembler<dim>::cell_coefficients (
   {
     faces[f].values.clear ();
     faces[f].points.clear ();
-    if (!cell->face (f)->at_boundary ())
+    if (!face_has_terms (cell, f))
       continue;
-    const auto id     = cell->face (f)->boundary_id ();
-    bool       needed = false;
-    for (const auto &term : terms)
-      needed = needed || term->acts_on_boundary (id);
-    if (!needed)
-      continue;
+    const auto id = cell->face (f)->boundary_id ();
     prepare_face (cell, f, state, scratch);
     const unsigned int n_fq = scratch.face_values.n_quadrature_points;
     faces[f].values.assign (n_fq, FlowFacePointCoefficients<dim> ());

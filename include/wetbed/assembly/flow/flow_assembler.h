@@ -84,6 +84,8 @@ private:
   void prepare_cell (const CellIterator           &cell,
                      const FlowAssemblyState<dim> &state,
                      FlowCellScratch<dim>         &scratch) const;
+  /** Whether face f of the cell is a boundary face on which some term acts. */
+  bool face_has_terms (const CellIterator &cell, unsigned int f) const;
   /** The fields at the points of one boundary face. */
   void prepare_face (const CellIterator           &cell,
                      unsigned int                  face,
