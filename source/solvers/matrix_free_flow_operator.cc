@@ -374,8 +374,8 @@ void MatrixFreeFlowOperator<dim>::apply_boundary_faces (
   const unsigned int n_fq  = Utilities::pow (n_q_1d, dim - 1);
   const unsigned int first = matrix_free.n_inner_face_batches ();
   FEFaceEvaluation<dim, velocity_degree, n_q_1d, 2 * dim, double> u (
-      matrix_free, true, 0);
-  FEFaceEvaluation<dim, 1, n_q_1d, 1, double> p (matrix_free, true, 1);
+      matrix_free, true, first_dof);
+  FEFaceEvaluation<dim, 1, n_q_1d, 1, double> p (matrix_free, true, first_dof + 1);
   const auto both = EvaluationFlags::values | EvaluationFlags::gradients;
   for (unsigned int face = first; face < first + matrix_free.n_boundary_face_batches ();
        ++face)
