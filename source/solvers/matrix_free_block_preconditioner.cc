@@ -24,7 +24,7 @@ void MatrixFreeBlockPreconditioner<dim>::update (const FlowOperator &flow_operat
     op->initialize_velocity_vector (rhs);
     op->initialize_velocity_vector (solution);
   }
-  if (rebuild_velocity || multigrid.builds == 0)
+  if (rebuild_velocity)
     multigrid.rebuild ();
   dealii::TrilinosWrappers::PreconditionAMG::AdditionalData data;
   data.elliptic        = true;

@@ -28,10 +28,8 @@ void MatrixFreeFlowOperator<dim>::reinit (
     const Mapping<dim>              &mapping,
     const DoFHandler<dim>           &flow_dofs,
     const std::vector<IndexSet>     &owned,
-    const AffineConstraints<double> &flow_constraints,
-    MPI_Comm                         communicator)
+    const AffineConstraints<double> &flow_constraints)
 {
-  (void)communicator; // the DoF handlers' triangulation carries it
   flow_dof_handler = &flow_dofs;
   velocity_dof_handler.reinit (flow_dofs.get_triangulation ());
   velocity_dof_handler.distribute_dofs (velocity_fe);

@@ -103,10 +103,7 @@ public:
            parameters.linear_solver.check_operator;
   }
   /** The operator FGMRES applies (`linear solver/operator`). */
-  const FlowOperator &krylov_operator () const;
-  /** The largest relative difference between the matrix-free and the assembled
-   * operator found by `linear solver/check operator` (0 without checks). */
-  double operator_check_difference () const { return largest_operator_difference; }
+  const FlowOperator       &krylov_operator () const;
   const FlowAssembler<dim> &flow_assembler () const { return *assembler; }
 
 private:
@@ -121,7 +118,6 @@ private:
   MatrixFreeFlowOperator<dim>         matrix_free_op;
   VelocityMultigrid<dim>              multigrid;
   std::unique_ptr<MatrixFreeBlockPreconditioner<dim>> multigrid_preconditioner;
-  double                                              largest_operator_difference = 0;
   BlockVector                                         rhs;
   std::unique_ptr<BlockPreconditioner>                preconditioner;
   FlowLinearSolver                                    linear_solver;

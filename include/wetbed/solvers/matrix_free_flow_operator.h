@@ -51,8 +51,7 @@ public:
   void reinit (const dealii::Mapping<dim>              &mapping,
                const dealii::DoFHandler<dim>           &flow_dof_handler,
                const std::vector<dealii::IndexSet>     &owned,
-               const dealii::AffineConstraints<double> &flow_constraints,
-               MPI_Comm                                 communicator);
+               const dealii::AffineConstraints<double> &flow_constraints);
 
   using FlowCell = typename dealii::DoFHandler<dim>::active_cell_iterator;
   /** Called on each locally owned cell during update() with what the assembler
