@@ -229,7 +229,7 @@ void tracking_2d (MPI_Comm comm, const std::string &folder)
   p.gas_fraction_threshold = 0.8;
   p.minimum_diameter       = 0;
   BubbleAnalysis<2> analysis (p, criteria_of_box (2), s.triangulation, 1, comm);
-  analysis.open (folder);
+  analysis.open (folder, "0123456789abcdef");
   // a peanut (two overlapping circles), then the two apart (split), rising; a mesh
   // change; then merged again (coalescence)
   const std::vector<std::vector<Sphere>> frames = {
@@ -272,16 +272,23 @@ void tracking_2d (MPI_Comm comm, const std::string &folder)
     // (eight cells: the same cell pattern, shifted)
     std::ifstream in (folder + "/bubbles.csv");
     std::string   line;
-    unsigned int  n = 0, measured = 0;
+    unsigned int  n = 0, measured = 0, with_run = 0;
     std::getline (in, line);
+    check (line.substr (line.rfind (',') + 1) == "run", "bubbles.csv: the last column is run");
     while (std::getline (in, line))
+    {
+      const std::size_t last = line.rfind (',');
+      with_run += line.substr (last + 1) == "0123456789abcdef";
       if (++n == 4 || n == 5)
       {
-        const std::string rise = line.substr (line.rfind (',') + 1);
+        const std::size_t before = line.rfind (',', last - 1);
+        const std::string rise   = line.substr (before + 1, last - before - 1);
         std::cout << "frame 2 rise velocity: " << rise << std::endl;
         if (!rise.empty () && std::abs (std::stod (rise) - 12.5) < 1e-8)
           ++measured;
       }
+    }
+    check (with_run == 6, "bubbles.csv: every row carries the run's id");
     check (measured == 2,
            "tracking: rise velocity 12.5 m/s of both halves after the split");
   }

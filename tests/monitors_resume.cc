@@ -1,6 +1,7 @@
 // monitors.csv across a resume: cut back to the checkpoint's length, and a file written
 // with other columns (an earlier version, other probe heights) rewritten under the
-// current header, each value moved to its column by name, new columns left empty.
+// current header, each value moved to its column by name, new columns left empty and
+// the run column (an older file has none) given the run's id.
 #include "test_utilities.h"
 
 #include <wetbed/postprocess/monitors.h>
@@ -38,6 +39,7 @@ std::vector<std::string> fields (const std::string &line)
 int main ()
 {
   const std::string file = "monitors_resume.csv";
+  const std::string id   = "00c0ffee12345678";
   MonitorRow        row;
   row.fluidization        = 1.25;
   row.wall_support_solids = -0.5;
@@ -46,7 +48,7 @@ int main ()
   // same columns: the rows after the checkpoint are dropped, the run appends
   {
     Monitors m;
-    m.open (file, true, {{0.076}, {}, 0});
+    m.open (file, true, {{0.076}, {}, 0}, id);
     row.step = 1;
     m.add (row);
     row.step = 2;
@@ -58,24 +60,27 @@ int main ()
     check (before.size () == 3, "three lines before the resume");
     // the length after the first row, as the checkpoint stored it
     const unsigned long long bytes = before[0].size () + 1 + before[1].size () + 1;
-    m.reopen (file, true, bytes, {{0.076}, {}, 0});
+    m.reopen (file, true, bytes, {{0.076}, {}, 0}, id);
     row.step = 7;
     m.add (row);
   }
   auto lines = lines_of (file);
   check (lines.size () == 3 && fields (lines[1])[0] == "1" && fields (lines[2])[0] == "7",
          "resume with the same columns: row 2 dropped, row 7 appended");
+  check (fields (lines[0]).back () == "run" && fields (lines[1]).back () == id &&
+             fields (lines[2]).back () == id,
+         "the last column is run, every row carries the run's id");
 
-  // an older file without the budget columns and with the plane column where it was:
-  // written by hand from the current header less four columns
+  // an older file without the budget columns and the run column and with the plane
+  // column where it was: written by hand from the current header less five columns
   const std::vector<std::string> names = fields (lines[0]);
   std::vector<std::string>       old_names;
   for (const auto &n : names)
     if (n.rfind ("wall_support", 0) != 0 && n != "distributor_support" &&
-        n != "outlet_support")
+        n != "outlet_support" && n != "run")
       old_names.push_back (n);
-  check (old_names.size () + 4 == names.size (),
-         "the current header has the four budget columns");
+  check (old_names.size () + 5 == names.size (),
+         "the current header has the four budget columns and the run column");
   {
     std::ofstream out (file);
     for (std::size_t c = 0; c < old_names.size (); ++c)
@@ -94,7 +99,7 @@ int main ()
   const unsigned long long full = std::filesystem::file_size (file);
   {
     Monitors m;
-    m.reopen (file, true, full, {{0.076}, {}, 0});
+    m.reopen (file, true, full, {{0.076}, {}, 0}, id);
     row.step = 3;
     m.add (row);
   }
@@ -121,6 +126,7 @@ int main ()
                           names[c] == "distributor_support" ||
                           names[c] == "outlet_support";
       const std::string expected = budget               ? ""
+                                   : names[c] == "run"  ? id
                                    : names[c] == "step" ? std::to_string (r)
                                    : names[c] == "alpha_s_plane_0.076" ? "0.55"
                                                                        : "9";
@@ -136,9 +142,12 @@ int main ()
       new_row_ok = new_row_ok && values[c] == "-0.5";
     if (names[c] == "alpha_s_plane_0.076")
       new_row_ok = new_row_ok && values[c] == "0.3";
+    if (names[c] == "run")
+      new_row_ok = new_row_ok && values[c] == id;
   }
   check (old_rows_ok,
-         "old rows: every value under its own name, the budget columns empty");
+         "old rows: every value under its own name, the budget columns empty, the "
+         "run column the run's id");
   check (new_row_ok && values.size () == names.size (),
          "the row after the resume is written under the current header");
   std::filesystem::remove (file);

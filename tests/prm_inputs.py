@@ -4,10 +4,12 @@ a one-line message naming the parameter (or file) and no change to existing resu
 
 usage: prm_inputs.py WETBED_EXECUTABLE SOURCE_DIR WORK_DIR
 """
+import csv
 import fcntl
 import hashlib
 import math
 import os
+import re
 import shutil
 import signal
 import subprocess
@@ -78,9 +80,10 @@ for prm in sorted(os.listdir(os.path.join(source, "prm"))):
 # 2. bad inputs, each against a valid base that already wrote results
 base = with_mesh(open(os.path.join(source, "prm", "bubbling_bed_2d.prm")).read(), "base")
 results = os.path.join(work, "existing_results")
-base = override(base, f"subsection output\n set folder = {results}\n set field interval = 0\nend")
+base = override(base, f"subsection output\n set folder = {results}\n set field interval = 0\nend\n"
+                      "subsection bubble analysis\n set interval = 1\nend")
 shutil.rmtree(results, ignore_errors=True)
-code, _, err = run(override(base, "subsection time stepping\n set end time = 2e-4\nend"), "base_run")
+code, base_out, err = run(override(base, "subsection time stepping\n set end time = 2e-4\nend"), "base_run")
 # the bad inputs below may overwrite the base run's results: a refused input still must
 # change nothing there (checked file by file after each case)
 base = override(base, "subsection output\n set overwrite = true\nend")
@@ -427,6 +430,27 @@ rows = open(os.path.join(folder, "monitors.csv")).read().split("\n")
 rows[1] = rows[1].replace("0", "1", 1)
 open(os.path.join(folder, "monitors.csv"), "w").write("\n".join(rows))
 refused("resume onto another run's monitors.csv", resume_of(folder), "checkpoint/resume", folder, contains="monitors.csv")
+for name in ("bubbles.csv", "bubble_summary.csv"):
+    folder = copy_of_results("identity")
+    rows = open(os.path.join(folder, name)).read().split("\n")
+    line = 1 if rows[1] else 0  # a data row, or the header of a file without rows
+    rows[line] = rows[line].replace("0", "1", 1) if line else rows[line].replace("step", "Step")
+    open(os.path.join(folder, name), "w").write("\n".join(rows))
+    refused(f"resume onto another run's {name}", resume_of(folder), "checkpoint/resume", folder, contains=name)
+
+
+def run_ids(folder, name):
+    path = os.path.join(folder, name)
+    return [r["run"] for r in csv.DictReader(open(path))] if os.path.isfile(path) else []
+
+
+# every row of monitors.csv and bubble_summary.csv carries the id the run printed (the
+# base run is too short for bubbles: bubbles.csv is checked by the test bubble_analysis)
+printed = re.findall(r"^Run ([0-9a-f]{16})$", base_out, re.M)
+for name in ("monitors.csv", "bubble_summary.csv"):
+    ids = run_ids(results, name)
+    check(f"{name} rows carry the run id", len(printed) == 1 and ids and set(ids) == set(printed),
+          f"printed {printed}, in {name}: {sorted(set(ids))[:3]} ({len(ids)} rows)")
 # the mesh file changed under the checkpoint (a copy of the .geo, one more column)
 mesh_copy = os.path.join(work, "identity_mesh.geo")
 shutil.copy(os.path.join(source, "meshes", "column_2d.geo"), mesh_copy)
@@ -447,6 +471,8 @@ code, _, err = run(resume_of(folder, "subsection time stepping\n set end time = 
 lines_after = open(os.path.join(folder, "monitors.csv")).read().count("\n")
 check("resume with a new end time and tolerance continues the run", code == 0 and lines_after > lines_before,
       f"exit {code} '{last_line(err)}', {lines_before} -> {lines_after} lines")
+check("the resumed rows carry the run's id", set(run_ids(folder, "monitors.csv")) == set(printed),
+      f"{sorted(set(run_ids(folder, 'monitors.csv')))}, printed {printed}")
 # no shell: a mesh path and an output folder holding $(...), quotes and ; run as names
 pwned = os.path.join("/tmp", f"wetbed_pwned_{os.getpid()}")
 shell_dir = os.path.join(work, f"shell $(touch {pwned}) `touch {pwned}` \"; touch {pwned}; '")

@@ -32,10 +32,12 @@ namespace
 {
 const char *bubbles_header = "step,time,track,volume,equivalent_diameter,centroid_x,"
                              "centroid_y,centroid_z,lower_x,lower_y,lower_z,upper_x,"
-                             "upper_y,upper_z,touches_wall,cells,rise_velocity\n";
-const char *events_header  = "step,time,kind,tracks_before,tracks_after\n";
+                             "upper_y,upper_z,touches_wall,cells,rise_velocity,run\n";
+const char *events_header  = "step,time,kind,tracks_before,tracks_after,run\n";
 const char *summary_header = "step,time,bubbles,mean_equivalent_diameter,"
-                             "bubble_volume,splittings,coalescences\n";
+                             "bubble_volume,splittings,coalescences,run\n";
+// the files, in the order of the saved lengths
+const char *file_names[] = {"bubbles.csv", "bubble_events.csv", "bubble_summary.csv"};
 
 std::string join (const std::vector<unsigned int> &tracks)
 {
@@ -47,15 +49,16 @@ std::string join (const std::vector<unsigned int> &tracks)
 } // namespace
 
 template <int dim>
-void BubbleAnalysis<dim>::open (const std::string &folder)
+void BubbleAnalysis<dim>::open (const std::string &folder, const std::string &run_id)
 {
+  run = run_id;
   if (!root || !parameters.enabled)
     return;
-  bubbles_file.open (folder + "/bubbles.csv");
+  bubbles_file.open (folder + "/" + file_names[0]);
   bubbles_file << bubbles_header;
-  events_file.open (folder + "/bubble_events.csv");
+  events_file.open (folder + "/" + file_names[1]);
   events_file << events_header;
-  summary_file.open (folder + "/bubble_summary.csv");
+  summary_file.open (folder + "/" + file_names[2]);
   summary_file << summary_header;
 }
 
@@ -114,18 +117,19 @@ BubbleAnalysis<dim>::analyse (const unsigned int     step,
       bubbles_file << ',' << b.touches_wall << ',' << b.cells << ',';
       if (!std::isnan (update.rise_velocity[i]))
         bubbles_file << update.rise_velocity[i];
-      bubbles_file << '\n';
+      bubbles_file << ',' << run << '\n';
     }
     for (const auto &e : update.events)
       events_file << step << ',' << std::setprecision (10) << time << ','
                   << (e.kind == BubbleEvent::Kind::splitting ? "splitting"
                                                              : "coalescence")
-                  << ',' << join (e.before) << ',' << join (e.after) << '\n';
+                  << ',' << join (e.before) << ',' << join (e.after) << ',' << run
+                  << '\n';
     summary_file << step << ',' << std::setprecision (10) << time << ','
                  << field.bubbles.size () << ','
                  << (field.bubbles.empty () ? 0.0 : diameters / field.bubbles.size ())
                  << ',' << total << ',' << tracking.splittings () << ','
-                 << tracking.coalescences () << '\n';
+                 << tracking.coalescences () << ',' << run << '\n';
     for (auto *f : {&bubbles_file, &events_file, &summary_file})
       f->flush ();
   }
@@ -202,9 +206,24 @@ std::string BubbleAnalysis<dim>::saved_state ()
 }
 
 template <int dim>
-void BubbleAnalysis<dim>::restore_state (const std::string &state,
-                                         const std::string &folder)
+std::vector<std::pair<std::string, unsigned long long>>
+BubbleAnalysis<dim>::file_lengths ()
 {
+  std::vector<std::pair<std::string, unsigned long long>> lengths;
+  std::ofstream *files[] = {&bubbles_file, &events_file, &summary_file};
+  for (unsigned int f = 0; f < 3; ++f)
+    if (files[f]->is_open ())
+      lengths.emplace_back (file_names[f],
+                            static_cast<unsigned long long> (files[f]->tellp ()));
+  return lengths;
+}
+
+template <int dim>
+void BubbleAnalysis<dim>::restore_state (const std::string &state,
+                                         const std::string &folder,
+                                         const std::string &run_id)
+{
+  run = run_id;
   std::vector<unsigned long long> bytes;
   std::istringstream              in (state);
   boost::archive::text_iarchive   archive (in);
@@ -213,12 +232,12 @@ void BubbleAnalysis<dim>::restore_state (const std::string &state,
     return;
   if (bytes[2] == 0) // the checkpointed run did not analyse bubbles
   {
-    open (folder);
+    open (folder, run_id);
     return;
   }
-  continue_csv (bubbles_file, folder + "/bubbles.csv", bytes[0]);
-  continue_csv (events_file, folder + "/bubble_events.csv", bytes[1]);
-  continue_csv (summary_file, folder + "/bubble_summary.csv", bytes[2]);
+  continue_csv (bubbles_file, folder + "/" + file_names[0], bytes[0]);
+  continue_csv (events_file, folder + "/" + file_names[1], bytes[1]);
+  continue_csv (summary_file, folder + "/" + file_names[2], bytes[2]);
 }
 
 template class BubbleAnalysis<2>;

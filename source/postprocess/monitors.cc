@@ -30,6 +30,7 @@ std::string header (const MonitorColumns &columns)
          << columns.pressure_drop_planes[1];
   for (unsigned int i = 0; i < columns.point_probes; ++i)
     file << ",probe_" << i << "_alpha_s,probe_" << i << "_pressure";
+  file << ",run"; // the run's id, last: the columns before keep their places
   return file.str ();
 }
 
@@ -47,8 +48,10 @@ std::vector<std::string> split (const std::string &line)
 
 void Monitors::open (const std::string    &filename,
                      const bool            write,
-                     const MonitorColumns &columns)
+                     const MonitorColumns &columns,
+                     const std::string    &run_id)
 {
+  run = run_id;
   if (!write)
     return;
   file.open (filename);
@@ -58,8 +61,10 @@ void Monitors::open (const std::string    &filename,
 void Monitors::reopen (const std::string       &filename,
                        const bool               write,
                        const unsigned long long bytes,
-                       const MonitorColumns    &columns)
+                       const MonitorColumns    &columns,
+                       const std::string       &run_id)
 {
+  run = run_id;
   if (!write)
     return;
   continue_csv (file, filename, bytes);
@@ -73,7 +78,8 @@ void Monitors::reopen (const std::string       &filename,
   if (!lines.empty () && lines[0] != current)
   {
     // written by a version with other columns: the rows so far are rewritten under the
-    // current header, each column found by name, the new ones left empty; into a
+    // current header, each column found by name, the new ones left empty (the run
+    // column gets the run's id: the checkpoint identified the rows as its own); into a
     // temporary file renamed over the old one, so a failure leaves the old file whole
     const std::vector<std::string> old_names = split (lines[0]), names = split (current);
     const std::string              temporary = filename + ".rewrite";
@@ -87,8 +93,10 @@ void Monitors::reopen (const std::string       &filename,
         {
           const auto k = std::find (old_names.begin (), old_names.end (), names[c]) -
                          old_names.begin ();
+          const bool found = k < static_cast<long> (old_names.size ()) &&
+                             k < static_cast<long> (values.size ());
           out << (c > 0 ? "," : "")
-              << (k < static_cast<long> (values.size ()) ? values[k] : std::string ());
+              << (found ? values[k] : names[c] == "run" ? run : std::string ());
         }
         out << '\n';
       }
@@ -131,7 +139,7 @@ void Monitors::add (const MonitorRow &r)
     file << ',' << dp;
   for (unsigned int i = 0; i < r.probe_alpha.size (); ++i)
     file << ',' << r.probe_alpha[i] << ',' << r.probe_pressure[i];
-  file << '\n';
+  file << ',' << run << '\n';
   file.flush ();
 }
 } // namespace wetbed

@@ -162,6 +162,11 @@ CsvTable read_csv (const std::string &filename)
       if (!std::getline (values, item, ','))
         throw std::invalid_argument ("'" + filename + "' line " + std::to_string (row) +
                                      " has fewer columns than its header");
+      if (table.names[c] == "run") // the run's id: text
+      {
+        table.columns[c].push_back (std::nan (""));
+        continue;
+      }
       try
       {
         table.columns[c].push_back (item.empty () ? std::nan ("") : parse_number (item));

@@ -31,8 +31,8 @@
  *   state.checksum  the hash of `state` itself.
  * A resume refuses (status 2, naming what differs) a checkpoint whose files do not
  * match their hashes, whose mesh or parameters differ from the case's (but for those
- * that may change on resume, resume_may_change), or whose monitors.csv is not the one
- * its run wrote.
+ * that may change on resume, resume_may_change), or whose monitors.csv or bubble files
+ * are not the ones its run wrote.
  * It is written into checkpoint.partial and swapped in by renames only once complete,
  * so that a crash during the write never loses the previous checkpoint (at worst it
  * is left as checkpoint.previous, which a resume falls back on).
@@ -136,8 +136,8 @@ std::vector<std::string> triangulation_files (const std::string &folder)
 
 /**
  * The checkpoint is this case's: the same mesh file (its bytes), the same parameters
- * but for those that may change on resume, and the run's own monitors.csv (its first
- * monitors_bytes bytes as saved); InputError (status 2) naming what differs.
+ * but for those that may change on resume, and the run's own monitors.csv and bubble
+ * files (their first bytes as saved); InputError (status 2) naming what differs.
  */
 void check_identity (const CheckpointState &state,
                      const Parameters      &parameters,
@@ -163,13 +163,18 @@ void check_identity (const CheckpointState &state,
                  "' (on resume only the end time, time-step limits, output, "
                  "checkpoint, linear solver and spectrum settings may change)");
   }
-  const std::string monitors = parameters.output.folder + "/monitors.csv";
-  require (std::filesystem::is_regular_file (monitors) &&
-               std::filesystem::file_size (monitors) >= state.monitors_bytes &&
-               file_hash (monitors, state.monitors_bytes) == state.monitors_hash,
-           "checkpoint/resume",
-           "'" + monitors + "' is not the one the checkpoint's run wrote (run " +
-               state.run_id + "); resuming would cut or rewrite it");
+  // monitors.csv and the bubble files: resume cuts them back, so each must still begin
+  // with what the checkpoint's run had written
+  for (const AppendedFile &appended : state.appended_files)
+  {
+    const std::string file = parameters.output.folder + "/" + appended.name;
+    require (std::filesystem::is_regular_file (file) &&
+                 std::filesystem::file_size (file) >= appended.bytes &&
+                 file_hash (file, appended.bytes) == appended.hash,
+             "checkpoint/resume",
+             "'" + file + "' is not the one the checkpoint's run wrote (run " +
+                 state.run_id + "); resuming would cut or rewrite it");
+  }
 }
 
 std::string checkpoint_folder (const std::string &output_folder, const char *which = "")
@@ -258,8 +263,13 @@ void Checkpointing<dim>::write (const SolverState<dim>       &s,
   MPI_Barrier (communicator);
   if (root)
   {
-    state.monitors_hash =
-        file_hash (parameters.output.folder + "/monitors.csv", state.monitors_bytes);
+    std::vector<std::pair<std::string, unsigned long long>> appended =
+        bubbles.file_lengths ();
+    appended.emplace_back ("monitors.csv", state.monitors_bytes);
+    for (const auto &[name, bytes] : appended)
+      if (bytes > 0)
+        state.appended_files.push_back (
+            {name, bytes, file_hash (parameters.output.folder + "/" + name, bytes)});
     for (const std::string &name : triangulation_files (partial))
       state.files.emplace_back (name, file_hash (partial + "/" + name));
     {

@@ -139,8 +139,9 @@ void TwoFluidSolver<dim>::initialize ()
       }
     monitors.open (folder + "/monitors.csv",
                    Utilities::MPI::this_mpi_process (communicator) == 0,
-                   monitor_columns ());
-    bubble_analysis->open (folder);
+                   monitor_columns (),
+                   run_id);
+    bubble_analysis->open (folder, run_id);
     update_wave_speeds ();
   }
   if (parameters.checkpoint.on_signal)
@@ -178,10 +179,11 @@ void TwoFluidSolver<dim>::resume_from_checkpoint ()
   monitors.reopen (output + "/monitors.csv",
                    Utilities::MPI::this_mpi_process (communicator) == 0,
                    saved.monitors_bytes,
-                   monitor_columns ());
+                   monitor_columns (),
+                   run_id);
   update_wave_speeds ();
   monitors.restore (evaluate_monitors (state ()));
-  bubble_analysis->restore_state (saved.bubble_state, output);
+  bubble_analysis->restore_state (saved.bubble_state, output, run_id);
   resumed = true;
   pcout << "Resumed run " << run_id << " from " << checkpointing.source ()
         << " at t = " << time << " (step " << step_number << ")" << std::endl;

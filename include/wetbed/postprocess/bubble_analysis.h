@@ -10,6 +10,8 @@
 #include <fstream>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace wetbed
 {
@@ -30,8 +32,9 @@ public:
                   unsigned int                                             vertical,
                   MPI_Comm                                                 communicator);
 
-  /** Creates the CSV files in `folder` (rank 0 writes). */
-  void open (const std::string &folder);
+  /** Creates the CSV files in `folder` (rank 0 writes); the last column of each, run,
+   * holds `run_id` on every row. */
+  void open (const std::string &folder, const std::string &run_id);
 
   /** Detects and tracks the bubbles of alpha_s (ghosted), appends the rows. Returns the
    * number of bubbles. Collective. */
@@ -51,9 +54,13 @@ public:
   void prepare_for_serialization ();
   void deserialize ();
   /** The tracker state and the CSV lengths; restore_state() cuts the CSV files of
-   * `folder` back to the saved lengths and appends from there. */
+   * `folder` back to the saved lengths and appends from there, rows of run `run_id`. */
   std::string saved_state ();
-  void        restore_state (const std::string &state, const std::string &folder);
+  void        restore_state (const std::string &state,
+                             const std::string &folder,
+                             const std::string &run_id);
+  /** (name, bytes written) of the open CSV files (rank 0; none elsewhere). */
+  std::vector<std::pair<std::string, unsigned long long>> file_lengths ();
 
   const BubbleTracker &tracker () const { return tracking; }
 
@@ -75,5 +82,6 @@ private:
   dealii::Vector<float>          previous_label; // by active cell index; -1: none
   std::unique_ptr<LabelTransfer> transfer;
   std::ofstream                  bubbles_file, events_file, summary_file;
+  std::string                    run; // the run's id, the last column of every row
 };
 } // namespace wetbed

@@ -74,19 +74,24 @@ struct MonitorColumns
   unsigned int        point_probes = 0;     // probe_<i>_alpha_s, probe_<i>_pressure
 };
 
-/** Collects MonitorRows and writes them (rank 0) to a CSV file. */
+/** Collects MonitorRows and writes them (rank 0) to a CSV file; its last column, run,
+ * holds the run's id on every row (the id its checkpoints carry). */
 class Monitors
 {
 public:
-  void open (const std::string &filename, bool write, const MonitorColumns &columns = {});
+  void open (const std::string    &filename,
+             bool                  write,
+             const MonitorColumns &columns,
+             const std::string    &run_id);
   /** Continues `filename` of a resumed run: cut back to its first `bytes` (the rows up
    * to the checkpoint) and appended to from there. Rows written with other `columns`
    * (an earlier version) are rewritten under the current header, by column name, with
-   * the columns they lack left empty. */
+   * the columns they lack left empty (run: `run_id`). */
   void reopen (const std::string    &filename,
                bool                  write,
                unsigned long long    bytes,
-               const MonitorColumns &columns);
+               const MonitorColumns &columns,
+               const std::string    &run_id);
   /** Bytes of monitors.csv written so far (rank 0; 0 elsewhere). */
   unsigned long long bytes_written ();
   /** Makes `row` the last row without writing it (a resumed run's last saved state). */
@@ -97,6 +102,7 @@ public:
 
 private:
   std::ofstream           file;
+  std::string             run; // the run's id
   std::vector<MonitorRow> rows;
 };
 } // namespace wetbed

@@ -30,7 +30,8 @@ Spectrum welch_spectrum (const std::vector<double> &t,
                          double                     start_time,
                          unsigned int               segments);
 
-/** A CSV file with a header line, as named columns of numbers. */
+/** A CSV file with a header line, as named columns of numbers (the text column run,
+ * the run's id, reads as NaN). */
 struct CsvTable
 {
   std::vector<std::string>         names;

@@ -18,11 +18,25 @@
 
 namespace wetbed
 {
+/** A file of the output folder the run appends to (monitors.csv, the bubble files):
+ * its length at the checkpoint and the FNV-1a hash of those bytes. */
+struct AppendedFile
+{
+  std::string        name; // in the output folder
+  unsigned long long bytes = 0, hash = 0;
+
+  template <class Archive>
+  void serialize (Archive &archive, const unsigned int)
+  {
+    archive &name &bytes &hash;
+  }
+};
+
 /** Everything a resumed run needs besides the mesh and the fields, and the identity of
  * the run that wrote it (the file `state` of a checkpoint). */
 struct CheckpointState
 {
-  static constexpr unsigned int  current_format = 3;
+  static constexpr unsigned int  current_format = 4;
   unsigned int                   format = current_format, dimension = 0;
   std::string                    mesh_file;
   double                         time = 0, time_step = 0, previous_time_step = 0;
@@ -37,7 +51,8 @@ struct CheckpointState
   std::vector<std::pair<std::string, unsigned long long>> files;
   // the identity of the run
   std::string        run_id;
-  unsigned long long mesh_file_hash = 0, coarse_mesh_hash = 0, monitors_hash = 0;
+  unsigned long long        mesh_file_hash = 0, coarse_mesh_hash = 0;
+  std::vector<AppendedFile> appended_files; // resume cuts them back to these lengths
   std::vector<std::pair<std::string, std::string>> parameters;
 
   template <class Archive>
@@ -46,7 +61,7 @@ struct CheckpointState
     archive &format &dimension &mesh_file &time &time_step &previous_time_step;
     archive &step_number &rejected_steps &next_output_time &output_index;
     archive &initial_solids_mass &monitors_bytes &xdmf_entries &bubble_state &files;
-    archive &run_id &mesh_file_hash &coarse_mesh_hash &monitors_hash         &parameters;
+    archive &run_id &mesh_file_hash &coarse_mesh_hash &appended_files &parameters;
   }
 };
 
