@@ -274,7 +274,8 @@ void tracking_2d (MPI_Comm comm, const std::string &folder)
     std::string   line;
     unsigned int  n = 0, measured = 0, with_run = 0;
     std::getline (in, line);
-    check (line.substr (line.rfind (',') + 1) == "run", "bubbles.csv: the last column is run");
+    check (line.substr (line.rfind (',') + 1) == "run",
+           "bubbles.csv: the last column is run");
     while (std::getline (in, line))
     {
       const std::size_t last = line.rfind (',');

@@ -51,7 +51,8 @@ std::string join (const std::vector<unsigned int> &tracks)
 template <int dim>
 void BubbleAnalysis<dim>::open (const std::string &folder, const std::string &run_id)
 {
-  run = run_id;
+  run           = run_id;
+  output_folder = folder;
   if (!root || !parameters.enabled)
     return;
   bubbles_file.open (folder + "/" + file_names[0]);
@@ -133,6 +134,13 @@ BubbleAnalysis<dim>::analyse (const unsigned int     step,
     for (auto *f : {&bubbles_file, &events_file, &summary_file})
       f->flush ();
   }
+  // rank 0 writes: all stop together when a file lost a row
+  const bool failed = root && (!bubbles_file || !events_file || !summary_file);
+  if (Utilities::MPI::broadcast (communicator, failed, 0))
+    throw std::runtime_error (
+        "output/folder: cannot append to the bubble files in '" + output_folder +
+        "' at t = " + std::to_string (time) +
+        " (disk full or not writable); the last checkpoint is kept");
   return field.bubbles.size ();
 }
 
@@ -223,7 +231,8 @@ void BubbleAnalysis<dim>::restore_state (const std::string &state,
                                          const std::string &folder,
                                          const std::string &run_id)
 {
-  run = run_id;
+  run           = run_id;
+  output_folder = folder;
   std::vector<unsigned long long> bytes;
   std::istringstream              in (state);
   boost::archive::text_iarchive   archive (in);

@@ -5,9 +5,53 @@
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <hdf5.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <stdexcept>
+
 namespace wetbed
 {
 using namespace dealii;
+
+namespace
+{
+/** Whether `file` exists and ends with `tail` (the closing tag of a complete file). */
+bool ends_with (const std::string &file, const std::string &tail)
+{
+  std::ifstream in (file, std::ios::binary | std::ios::ate);
+  if (!in)
+    return false;
+  const std::streamoff size = in.tellg ();
+  if (size < static_cast<std::streamoff> (tail.size ()))
+    return false;
+  in.seekg (size - static_cast<std::streamoff> (tail.size ()));
+  std::string end (tail.size (), '\0');
+  in.read (end.data (), end.size ());
+  return in && end == tail;
+}
+
+/** Whether the PVTU record `pvtu` and every piece it lists are complete. */
+bool complete_vtu (const std::string &folder, const std::string &pvtu)
+{
+  const std::string closing = "</VTKFile>\n";
+  if (!ends_with (folder + pvtu, closing))
+    return false;
+  std::ifstream     in (folder + pvtu);
+  const std::string record ((std::istreambuf_iterator<char> (in)),
+                            std::istreambuf_iterator<char> ());
+  const std::regex  source ("Source=\"([^\"]+)\"");
+  unsigned int      pieces = 0;
+  for (auto m = std::sregex_iterator (record.begin (), record.end (), source);
+       m != std::sregex_iterator ();
+       ++m, ++pieces)
+    if (!ends_with (folder + (*m)[1].str (), closing))
+      return false;
+  return pieces > 0;
+}
+} // namespace
 
 /**
  * Writes u_g, u_s, p', alpha_s, alpha_g, the solids pressure P_s(alpha_s) (nodal, on the
@@ -148,28 +192,136 @@ void FieldOutput<dim>::write (const SolverState<dim> &s)
   subdomain = triangulation.locally_owned_subdomain ();
   data_out.add_data_vector (subdomain, "rank");
   data_out.build_patches (mapping, 2, DataOut<dim>::curved_inner_cells);
-  if (parameters.output.vtu)
-    data_out.write_vtu_with_pvtu_record (
-        parameters.output.folder + "/", "fields", count.output_index, s.communicator, 5);
-  if (parameters.output.hdf5)
-  {
-    // one file per output, written collectively; the XDMF index is rewritten each time
-    // (on rank 0) so that it always lists the complete outputs only. Vertices are not
-    // merged between patches: the cell fields (beta, mu_s, level, rank) stay piecewise
-    // constant instead of being averaged at shared vertices.
-    const std::string name =
-        "fields_" + Utilities::int_to_string (count.output_index, 5) + ".h5";
-    DataOutBase::DataOutFilter filter (DataOutBase::DataOutFilterFlags (false, true));
-    data_out.write_filtered_data (filter);
-    data_out.write_hdf5_parallel (
-        filter, parameters.output.folder + "/" + name, s.communicator);
-    count.xdmf_entries.push_back (
-        data_out.create_xdmf_entry (filter, name, s.time, s.communicator));
-    data_out.write_xdmf_file (
-        count.xdmf_entries, parameters.output.folder + "/fields.xdmf", s.communicator);
-  }
+  write_files (data_out, s.time, s.communicator);
   ++count.output_index;
   count.next_output_time += parameters.output.field_interval;
+}
+
+template <int dim>
+void FieldOutput<dim>::write_files (const DataOut<dim> &data_out,
+                                    const double        time,
+                                    const MPI_Comm      communicator)
+{
+  const bool        root   = Utilities::MPI::this_mpi_process (communicator) == 0;
+  const std::string folder = parameters.output.folder + "/";
+  const std::string stem   = "fields_" + Utilities::int_to_string (count.output_index, 5);
+  // HDF5 prints its error stack itself before deal.II throws: the failure is reported
+  // below, in one line
+  H5Eset_auto2 (H5E_DEFAULT, nullptr, nullptr);
+  // room first: a full disk in the middle of the collective HDF5 write leaves the ranks
+  // waiting for each other. Estimated: the patch points' coordinates and values, in
+  // double for HDF5 and in float for VTU (before its compression), scaled by what the
+  // last output took of its estimate, 1.2x, and 64 kB; refused on every rank together
+  double values = 0;
+  for (const auto &patch : data_out.get_patches ())
+    values += (patch.data.n_rows () + dim + 1.0) * patch.data.n_cols ();
+  const double bytes_per_value =
+      (parameters.output.vtu ? 4.0 : 0.0) + (parameters.output.hdf5 ? 8.0 : 0.0);
+  const double estimate = bytes_per_value * Utilities::MPI::sum (values, communicator);
+  const double needed =
+      1.2 * estimate *
+          (last_output_bytes > 0 ? last_output_bytes / last_output_estimate : 1.0) +
+      65536.0;
+  double available = 0;
+  if (root)
+  {
+    std::error_code error;
+    available = static_cast<double> (
+        std::filesystem::space (parameters.output.folder, error).available);
+    if (error)
+      available = 0;
+  }
+  if (Utilities::MPI::broadcast (communicator, available, 0) < needed)
+    throw std::runtime_error (
+        "output/folder: no room for the field output " + stem +
+        " at t = " + std::to_string (time) + " in '" + parameters.output.folder +
+        "' (needs ~" + std::to_string (needed / 1048576.0) + " MB, " +
+        std::to_string (available / 1048576.0) +
+        " MB free); the outputs before and the last checkpoint are kept");
+  bool      written = true;
+  XDMFEntry entry;
+  try
+  {
+    if (parameters.output.vtu)
+    {
+      const std::string pvtu = data_out.write_vtu_with_pvtu_record (
+          folder, "fields", count.output_index, communicator, 5);
+      if (root)
+        written = complete_vtu (folder, pvtu);
+    }
+    if (parameters.output.hdf5)
+    {
+      // one file per output, written collectively. Vertices are not merged between
+      // patches: the cell fields (beta, mu_s, level, rank) stay piecewise constant
+      // instead of being averaged at shared vertices.
+      DataOutBase::DataOutFilter filter (DataOutBase::DataOutFilterFlags (false, true));
+      data_out.write_filtered_data (filter);
+      data_out.write_hdf5_parallel (filter, folder + stem + ".h5", communicator);
+      entry = data_out.create_xdmf_entry (filter, stem + ".h5", time, communicator);
+    }
+  }
+  catch (const std::exception &)
+  {
+    written = false;
+  }
+  written = Utilities::MPI::min (written ? 1 : 0, communicator) == 1;
+  if (written && root)
+  {
+    // the size of this output, for the room the next one needs
+    std::error_code error;
+    last_output_bytes = 0;
+    for (const auto &file : std::filesystem::directory_iterator (folder, error))
+      if (file.path ().filename ().string ().rfind (stem + ".", 0) == 0)
+        last_output_bytes += file.file_size (error);
+  }
+  last_output_bytes    = Utilities::MPI::broadcast (communicator, last_output_bytes, 0);
+  last_output_estimate = estimate;
+  if (written && parameters.output.hdf5)
+  {
+    // the XDMF index of the complete outputs, rewritten (rank 0) beside the old one and
+    // renamed over it once whole
+    std::vector<XDMFEntry> entries = count.xdmf_entries;
+    entries.push_back (entry);
+    const std::string index = folder + "fields.xdmf";
+    try
+    {
+      data_out.write_xdmf_file (entries, index + ".partial", communicator);
+    }
+    catch (const std::exception &)
+    {
+      written = false;
+    }
+    if (root && written)
+    {
+      std::error_code error;
+      written = ends_with (index + ".partial", "</Xdmf>\n");
+      if (written)
+        std::filesystem::rename (index + ".partial", index, error);
+      written = written && !error;
+    }
+    written = Utilities::MPI::min (written ? 1 : 0, communicator) == 1;
+    if (written)
+      count.xdmf_entries.push_back (entry);
+  }
+  if (!written)
+  {
+    // the files of this output go (the outputs before and the checkpoint stay)
+    if (root)
+    {
+      std::error_code error;
+      for (const auto &file : std::filesystem::directory_iterator (folder, error))
+      {
+        const std::string name = file.path ().filename ().string ();
+        if (name.rfind (stem + ".", 0) == 0 || name == "fields.xdmf.partial")
+          std::filesystem::remove (file.path (), error);
+      }
+    }
+    throw std::runtime_error ("output/folder: cannot write the field output " + stem +
+                              " at t = " + std::to_string (time) + " into '" +
+                              parameters.output.folder +
+                              "' (disk full or not writable); the outputs before and "
+                              "the last checkpoint are kept");
+  }
 }
 
 template <int dim>

@@ -96,7 +96,9 @@ void Monitors::reopen (const std::string       &filename,
           const bool found = k < static_cast<long> (old_names.size ()) &&
                              k < static_cast<long> (values.size ());
           out << (c > 0 ? "," : "")
-              << (found ? values[k] : names[c] == "run" ? run : std::string ());
+              << (found               ? values[k]
+                  : names[c] == "run" ? run
+                                      : std::string ());
         }
         out << '\n';
       }

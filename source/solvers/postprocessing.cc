@@ -63,6 +63,12 @@ void TwoFluidSolver<dim>::record_monitors ()
 {
   TimerOutput::Scope scope (timer, "monitors");
   monitors.add (evaluate_monitors (state ()));
+  // rank 0 writes: all stop together when its file lost a row
+  if (Utilities::MPI::broadcast (communicator, monitors.writing_failed (), 0))
+    throw std::runtime_error (
+        "output/folder: cannot append to '" + parameters.output.folder +
+        "/monitors.csv' at t = " + std::to_string (time) +
+        " (disk full or not writable); the last checkpoint is kept");
 }
 
 template <int dim>

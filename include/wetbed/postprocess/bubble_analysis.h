@@ -83,5 +83,6 @@ private:
   std::unique_ptr<LabelTransfer> transfer;
   std::ofstream                  bubbles_file, events_file, summary_file;
   std::string                    run; // the run's id, the last column of every row
+  std::string                    output_folder;
 };
 } // namespace wetbed

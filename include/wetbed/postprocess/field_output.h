@@ -5,6 +5,7 @@
 
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/timer.h>
+#include <deal.II/numerics/data_out.h>
 
 #include <vector>
 
@@ -32,7 +33,10 @@ public:
 
   FieldOutput (const Parameters &parameters, dealii::TimerOutput &timer);
 
-  /** Writes the fields of `state` and counts the output; collective. */
+  /** Writes the fields of `state` and counts the output; collective. An output that
+   * does not fit on the disk (estimated before writing), or a write that fails on any
+   * rank, throws std::runtime_error naming output/folder on every rank, with the files
+   * of this output removed and fields.xdmf as before. */
   void write (const SolverState<dim> &state);
 
   /** Whether an output is due at `time` (every `output/field interval` > 0 s). */
@@ -43,8 +47,14 @@ public:
   void restore (const Counters &saved) { count = saved; }
 
 private:
+  /** The files of one output (VTU pieces and record, HDF5 and the XDMF index), each
+   * checked complete. */
+  void write_files (const dealii::DataOut<dim> &data_out, double time, MPI_Comm comm);
+
   const Parameters    &parameters;
   dealii::TimerOutput &timer;
   Counters             count;
+  // the bytes of the files of the last output and what write_files estimated for them
+  double last_output_bytes = 0, last_output_estimate = 1;
 };
 } // namespace wetbed

@@ -95,9 +95,11 @@ public:
   /** Bytes of monitors.csv written so far (rank 0; 0 elsewhere). */
   unsigned long long bytes_written ();
   /** Makes `row` the last row without writing it (a resumed run's last saved state). */
-  void                           restore (const MonitorRow &row) { rows.push_back (row); }
-  void                           add (const MonitorRow &row);
-  const MonitorRow              &last () const { return rows.back (); }
+  void restore (const MonitorRow &row) { rows.push_back (row); }
+  void add (const MonitorRow &row);
+  /** Whether a write to the file has failed (disk full): rows are missing from it. */
+  bool              writing_failed () const { return file.is_open () && !file; }
+  const MonitorRow &last () const { return rows.back (); }
   const std::vector<MonitorRow> &all () const { return rows; }
 
 private:

@@ -50,7 +50,7 @@ struct CheckpointState
   // (name, FNV-1a hash of the contents) of every file of the saved triangulation
   std::vector<std::pair<std::string, unsigned long long>> files;
   // the identity of the run
-  std::string        run_id;
+  std::string               run_id;
   unsigned long long        mesh_file_hash = 0, coarse_mesh_hash = 0;
   std::vector<AppendedFile> appended_files; // resume cuts them back to these lengths
   std::vector<std::pair<std::string, std::string>> parameters;
@@ -61,7 +61,7 @@ struct CheckpointState
     archive &format &dimension &mesh_file &time &time_step &previous_time_step;
     archive &step_number &rejected_steps &next_output_time &output_index;
     archive &initial_solids_mass &monitors_bytes &xdmf_entries &bubble_state &files;
-    archive &run_id &mesh_file_hash &coarse_mesh_hash &appended_files &parameters;
+    archive &run_id &mesh_file_hash &coarse_mesh_hash &appended_files        &parameters;
   }
 };
 
