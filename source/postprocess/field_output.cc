@@ -238,16 +238,15 @@ void FieldOutput<dim>::write_files (const DataOut<dim> &data_out,
         "' (needs ~" + std::to_string (needed / 1048576.0) + " MB, " +
         std::to_string (available / 1048576.0) +
         " MB free); the outputs before and the last checkpoint are kept");
-  bool      written = true;
-  XDMFEntry entry;
+  bool        written = true;
+  XDMFEntry   entry;
+  std::string pvtu; // the VTU record
   try
   {
     if (parameters.output.vtu)
     {
-      const std::string pvtu = data_out.write_vtu_with_pvtu_record (
+      pvtu = data_out.write_vtu_with_pvtu_record (
           folder, "fields", count.output_index, communicator, 5);
-      if (root)
-        written = complete_vtu (folder, pvtu);
     }
     if (parameters.output.hdf5)
     {
@@ -265,6 +264,10 @@ void FieldOutput<dim>::write_files (const DataOut<dim> &data_out,
     written = false;
   }
   written = Utilities::MPI::min (written ? 1 : 0, communicator) == 1;
+  // every piece closed by now: rank 0 reads them
+  if (written && parameters.output.vtu)
+    written = Utilities::MPI::broadcast (
+        communicator, root ? complete_vtu (folder, pvtu) : true, 0);
   if (written && root)
   {
     // the size of this output, for the room the next one needs
