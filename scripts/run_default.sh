@@ -18,6 +18,9 @@ else
 fi
 shift || true
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+# Ctrl-C: mpirun passes it on and kills the ranks after this many seconds (Open MPI's
+# default 1); the ranks abandon their step and write a checkpoint within it
+export OMPI_MCA_odls_base_sigkill_timeout=${OMPI_MCA_odls_base_sigkill_timeout:-10}
 mpirun --oversubscribe -np "$ranks" build/wetbed "$case_file" "$@"
 # the case's output/folder (relative to this folder, as wetbed takes it; default output)
 folder=$(sed -n 's/^[[:space:]]*set[[:space:]]\{1,\}folder[[:space:]]*=[[:space:]]*\([^#]*\).*/\1/p' "$case_file" |
