@@ -144,4 +144,16 @@ void OutputFolderLock::remove_previous_results ()
       fs::remove (entry.path (), ignored);
   replacing = false;
 }
+double free_space (const std::string &folder, const MPI_Comm communicator)
+{
+  double available = 0;
+  if (dealii::Utilities::MPI::this_mpi_process (communicator) == 0)
+  {
+    std::error_code error;
+    available = static_cast<double> (fs::space (folder, error).available);
+    if (error)
+      available = 0;
+  }
+  return dealii::Utilities::MPI::broadcast (communicator, available, 0);
+}
 } // namespace wetbed

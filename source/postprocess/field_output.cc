@@ -1,3 +1,4 @@
+#include <wetbed/core/output_folder.h>
 #include <wetbed/postprocess/field_output.h>
 
 #include <deal.II/base/quadrature_lib.h>
@@ -222,16 +223,8 @@ void FieldOutput<dim>::write_files (const DataOut<dim> &data_out,
       1.2 * estimate *
           (last_output_bytes > 0 ? last_output_bytes / last_output_estimate : 1.0) +
       65536.0;
-  double available = 0;
-  if (root)
-  {
-    std::error_code error;
-    available = static_cast<double> (
-        std::filesystem::space (parameters.output.folder, error).available);
-    if (error)
-      available = 0;
-  }
-  if (Utilities::MPI::broadcast (communicator, available, 0) < needed)
+  const double available = free_space (parameters.output.folder, communicator);
+  if (available < needed)
     throw std::runtime_error (
         "output/folder: no room for the field output " + stem +
         " at t = " + std::to_string (time) + " in '" + parameters.output.folder +

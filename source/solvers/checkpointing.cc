@@ -1,4 +1,5 @@
 #include <wetbed/core/input_error.h>
+#include <wetbed/core/output_folder.h>
 #include <wetbed/mesh/mesh_input.h>
 #include <wetbed/solvers/checkpointing.h>
 
@@ -211,16 +212,7 @@ void Checkpointing<dim>::write (const SolverState<dim>       &s,
       1.1 * 8.0 * s.triangulation.n_global_active_cells () *
           (3.0 * s.flow_fe.n_dofs_per_cell () + 6.0 * s.alpha_fe.n_dofs_per_cell ()) +
       65536.0;
-  double available = 0;
-  if (root)
-  {
-    std::error_code error;
-    available = static_cast<double> (
-        std::filesystem::space (parameters.output.folder, error).available);
-    if (error)
-      available = 0;
-  }
-  available = Utilities::MPI::broadcast (communicator, available, 0);
+  const double available = free_space (parameters.output.folder, communicator);
   if (available < needed)
     throw std::runtime_error ("output/folder: no room for a checkpoint in '" +
                               parameters.output.folder +

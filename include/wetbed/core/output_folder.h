@@ -7,6 +7,10 @@
 
 namespace wetbed
 {
+/** The bytes free on the file system of `folder` as rank 0 sees it (0 if it cannot
+ * tell), on every rank; collective. What a write checks for room before it starts. */
+double free_space (const std::string &folder, MPI_Comm communicator);
+
 /**
  * The output folder of a run, held for the whole run: rank 0 creates it if missing
  * (the input has been read and checked by then), takes an exclusive lock (flock on
