@@ -456,13 +456,15 @@ elif check == "signals":
         out, err = process.communicate()
         return folder, process.returncode, out
 
-    # (SIGINT/SIGTERM to mpirun itself: Open MPI 4.1 terminates the ranks before they
-    # finish their step, with or without odls_base_sigkill_timeout; not a guarantee)
-    for name, sig in (("sigusr2", signal.SIGUSR2),):
+    # SIGINT (Ctrl-C) and SIGTERM to mpirun itself: Open MPI sends SIGTERM to the ranks
+    # and kills them about a second later, so the ranks abandon the step in progress
+    # and checkpoint the last accepted one
+    for name, sig in (("sigusr2", signal.SIGUSR2), ("sigterm", signal.SIGTERM), ("sigint", signal.SIGINT)):
         folder, code, out = interrupted(name, sig)
         stopped_at = len(read_monitors(folder)) - 1
         expect(code != 0 and "Stop requested by a signal" in out and os.path.isfile(os.path.join(folder, "checkpoint", "state")),
-               f"{name.upper()} to mpirun at step {stopped_at}: stopped with a checkpoint (exit {code})")
+               f"{name.upper()} to mpirun at step {stopped_at}: stopped with a checkpoint (exit {code})"
+               + "".join("; " + line for line in out.splitlines() if "Stop requested" in line))
         rows = run("kinetic_theory_bed", overrides, 2, folder, resume=True)
         same_monitors(reference, rows, f"stopped by {name.upper()} at step {stopped_at}, resumed on 2 ranks", 1e-5)
     folder, code, out = interrupted("sigusr1", signal.SIGUSR1)

@@ -1,3 +1,4 @@
+#include <wetbed/solvers/interruptible_solver_control.h>
 #include <wetbed/solvers/solids_transport.h>
 
 #include <deal.II/base/quadrature_lib.h>
@@ -185,8 +186,10 @@ bool SolidsTransport<dim>::correct_solids_pressure (
 
   TrilinosWrappers::MPI::Vector increment (rhs); // z
   increment = 0;
-  SolverControl control (
-      1000, parameters.linear_solver.scalar_tolerance * rhs.l2_norm () + 1e-300);
+  InterruptibleSolverControl control (
+      communicator,
+      1000,
+      parameters.linear_solver.scalar_tolerance * rhs.l2_norm () + 1e-300);
   control.enable_history_data ();
   SolverCG<TrilinosWrappers::MPI::Vector> cg (control);
   TrilinosWrappers::PreconditionAMG       amg;

@@ -1,4 +1,5 @@
 #include <wetbed/solvers/flow_linear_solver.h>
+#include <wetbed/solvers/interruptible_solver_control.h>
 
 #include <deal.II/lac/solver_gmres.h>
 
@@ -49,7 +50,8 @@ unsigned int FlowLinearSolver::solve (const FlowOperator &op,
                : ls.maximum_iterations;
     TimerOutput::Scope scope (timer, "Krylov solve");
     solution = initial_guess;
-    SolverControl control (limit, std::max (target, 1e-300));
+    InterruptibleSolverControl control (
+        rhs.block (0).get_mpi_communicator (), limit, std::max (target, 1e-300));
     control.enable_history_data ();
     SolverFGMRES<BlockVector> fgmres (
         control, typename SolverFGMRES<BlockVector>::AdditionalData (ls.restart));

@@ -1,4 +1,5 @@
 #include <wetbed/solvers/granular_energy_solver.h>
+#include <wetbed/solvers/interruptible_solver_control.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -118,8 +119,10 @@ bool GranularEnergySolver<dim>::solve_granular_energy_system (
 {
   for (const auto i : solution.locally_owned_elements ())
     solution (i) = theta (i);
-  SolverControl control (
-      500, parameters.linear_solver.scalar_tolerance * rhs.l2_norm () + 1e-300);
+  InterruptibleSolverControl control (
+      communicator,
+      500,
+      parameters.linear_solver.scalar_tolerance * rhs.l2_norm () + 1e-300);
   control.enable_history_data ();
   // right preconditioning: the tolerance applies to the true residual. Left (deal.II's
   // default) measures the AMG-preconditioned residual, ~dt/capacity smaller here: the

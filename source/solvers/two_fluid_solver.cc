@@ -437,6 +437,7 @@ bool TwoFluidSolver<dim>::try_time_step (const double dt, const unsigned int bdf
   };
   for (unsigned int k = 0; k < parameters.time.outer_iterations; ++k)
   {
+    abandon_step_on_stop (communicator);
     solve_history.set_outer_iteration (k);
     // 1. closures at quadrature points + monolithic (u_g, u_s, p') solve with
     //    P_s(alpha_m) explicit, alpha_m the latest alpha_s (alpha_s^n at k = 0)
@@ -543,6 +544,14 @@ void TwoFluidSolver<dim>::advance ()
     {
       accepted = try_time_step (dt, order);
     }
+    catch (const StepInterrupted &)
+    {
+      // back to the last accepted step, which the run checkpoints
+      flow_solution = saved_flow;
+      alpha         = alpha_old;
+      theta         = theta_old;
+      throw;
+    }
     catch (const SolverControl::NoConvergence &failure)
     {
       std::ostringstream reason;
@@ -620,7 +629,23 @@ typename TwoFluidSolver<dim>::RunEnd TwoFluidSolver<dim>::run ()
   const auto &checkpoint = parameters.checkpoint;
   while (time < ts.end_time * (1 - 1e-12))
   {
-    advance ();
+    try
+    {
+      advance ();
+    }
+    catch (const StepInterrupted &)
+    {
+      const auto stopping = std::chrono::steady_clock::now ();
+      write_checkpoint ();
+      pcout << "Stop requested by a signal during step " << step_number + 1
+            << ": the step was abandoned, the checkpoint holds t = " << time << " (step "
+            << step_number << "), written in "
+            << std::chrono::duration<double> (std::chrono::steady_clock::now () -
+                                              stopping)
+                   .count ()
+            << " s" << std::endl;
+      return RunEnd::stopped_by_signal;
+    }
     if (parameters.adaptive_refinement.enabled &&
         step_number % parameters.adaptive_refinement.interval == 0)
     {

@@ -2,6 +2,8 @@
 
 #include <mpi.h>
 
+#include <exception>
+
 namespace wetbed
 {
 /** Makes SIGTERM, SIGINT and SIGUSR2 (stop) and SIGUSR1 (checkpoint) only set a flag
@@ -19,4 +21,24 @@ enum class SignalRequest
 /** The strongest request any rank received (collective: every rank must call it);
  * a checkpoint request is answered by this call (cleared). */
 SignalRequest signal_request (MPI_Comm communicator);
+
+/** Whether any rank received a stop signal (collective; false on every rank without a
+ * call to catch_stop_signals()). The request stays for signal_request(). */
+bool stop_requested (MPI_Comm communicator);
+
+/** Thrown at a check point inside a time step (each outer iteration, each Krylov
+ * iteration) once a stop signal reached any rank: the step is abandoned, and the run
+ * checkpoints its last accepted step at once. mpirun (Open MPI) kills its ranks about
+ * a second after it forwards SIGTERM, too soon to finish a step. */
+class StepInterrupted : public std::exception
+{
+public:
+  const char *what () const noexcept override
+  {
+    return "the time step was abandoned on a stop signal";
+  }
+};
+
+/** Throws StepInterrupted when stop_requested() (collective). */
+void abandon_step_on_stop (MPI_Comm communicator);
 } // namespace wetbed
