@@ -87,7 +87,7 @@ void FlowSystem<dim>::reinit (const Mapping<dim>              &mapping,
     if (parameters.linear_solver.p_multigrid)
     {
       const unsigned int builds = multigrid.builds;
-      multigrid.reinit (mapping, matrix_free_op);
+      multigrid.reinit (matrix_free_op);
       multigrid.builds = builds;
       multigrid_preconditioner =
           std::make_unique<MatrixFreeBlockPreconditioner<dim>> (op, multigrid);
@@ -165,30 +165,33 @@ void FlowSystem<dim>::assemble (const FlowAssemblyState<dim>    &state,
   assembled_flow  = *state.flow;
   const typename FlowAssembler<dim>::BoundaryRowCapture capture{
       &boundary_velocity_dofs, up, &boundary_cell_systems};
+  // the matrix-free operator's coefficients and the p-multigrid's coarse matrix and node
+  // blocks come from the same pass over the cells as the rhs and L_c
+  typename FlowAssembler<dim>::Sinks sinks;
+  if (parameters.linear_solver.matrix_free)
+  {
+    TimerOutput::Scope mf_scope (timer, "matrix-free coefficients");
+    matrix_free_op.begin_update (*assembler);
+    sinks.push_back (&matrix_free_op);
+    if (parameters.linear_solver.p_multigrid)
+    {
+      multigrid.begin_update ();
+      sinks.push_back (&multigrid);
+    }
+  }
   assembler->assemble (state,
                        flow_constraints,
                        schur_constraints,
                        op,
                        rhs,
                        capture,
-                       assembled_matrix_needed ());
+                       assembled_matrix_needed (),
+                       sinks);
   if (parameters.linear_solver.matrix_free)
   {
     TimerOutput::Scope mf_scope (timer, "matrix-free coefficients");
     if (parameters.linear_solver.p_multigrid)
-    {
-      multigrid.begin_update ();
-      matrix_free_op.update (*assembler,
-                             state,
-                             [this] (const auto &cell,
-                                     const auto &scratch,
-                                     const auto &values,
-                                     const auto &faces)
-                             { multigrid.add_cell (cell, scratch, values, faces); });
       multigrid.end_update ();
-    }
-    else
-      matrix_free_op.update (*assembler, state);
     if (assembled_matrix_needed ())
       matrix_free_op.set_constrained_diagonal (op);
   }

@@ -5,7 +5,6 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/matrix_free/fe_evaluation.h>
 
-#include <map>
 #include <unordered_map>
 
 namespace wetbed
@@ -76,6 +75,44 @@ void MatrixFreeFlowOperator<dim>::reinit (
           src_u.get_partitioner ()->global_to_local (index));
   cell_data.clear ();
   face_data.clear ();
+  find_batch_places ();
+}
+
+template <int dim>
+void MatrixFreeFlowOperator<dim>::find_batch_places ()
+{
+  const unsigned int lanes = VA::size ();
+  cell_place.assign (velocity_dof_handler.get_triangulation ().n_active_cells (),
+                     numbers::invalid_unsigned_int);
+  for (unsigned int batch = 0; batch < matrix_free.n_cell_batches (); ++batch)
+    for (unsigned int lane = 0;
+         lane < matrix_free.n_active_entries_per_cell_batch (batch);
+         ++lane)
+      cell_place[matrix_free.get_cell_iterator (batch, lane, 0)->active_cell_index ()] =
+          batch * lanes + lane;
+
+  const unsigned int n_fq       = Utilities::pow (n_q_1d, dim - 1);
+  const unsigned int first      = matrix_free.n_inner_face_batches (),
+                     n_boundary = matrix_free.n_boundary_face_batches ();
+  boundary_face_place.clear ();
+  boundary_face_points.assign (n_boundary * lanes * n_fq, Point<dim> ());
+  FEFaceEvaluation<dim, velocity_degree, n_q_1d, 2 * dim, double> phi (
+      matrix_free, true, 0);
+  for (unsigned int face = first; face < first + n_boundary; ++face)
+  {
+    phi.reinit (face);
+    for (unsigned int lane = 0; lane < matrix_free.n_active_entries_per_face_batch (face);
+         ++lane)
+    {
+      const auto [cell, face_number]   = matrix_free.get_face_iterator (face, lane, true);
+      const unsigned int place         = (face - first) * lanes + lane;
+      boundary_face_place[cell->active_cell_index () * GeometryInfo<dim>::faces_per_cell +
+                          face_number] = place;
+      for (unsigned int q = 0; q < n_fq; ++q)
+        for (unsigned int e = 0; e < dim; ++e)
+          boundary_face_points[place * n_fq + q][e] = phi.quadrature_point (q)[e][lane];
+    }
+  }
 }
 
 template <int dim>
@@ -170,9 +207,7 @@ void MatrixFreeFlowOperator<dim>::build_maps (
 }
 
 template <int dim>
-void MatrixFreeFlowOperator<dim>::update (const FlowAssembler<dim>     &assembler,
-                                          const FlowAssemblyState<dim> &state,
-                                          const CellObserver           &observer)
+void MatrixFreeFlowOperator<dim>::begin_update (const FlowAssembler<dim> &assembler)
 {
   const std::string missing = assembler.term_without_coefficients ();
   require (missing.empty (),
@@ -182,94 +217,76 @@ void MatrixFreeFlowOperator<dim>::update (const FlowAssembler<dim>     &assemble
   const unsigned int n_q  = Utilities::pow (n_q_1d, dim);
   const unsigned int n_fq = Utilities::pow (n_q_1d, dim - 1);
   cell_data.assign (matrix_free.n_cell_batches () * n_q, CellData ());
+  face_data.assign (matrix_free.n_boundary_face_batches () * n_fq, FaceData ());
   pressure_coupling = false;
+}
 
-  using FaceKey = std::pair<std::pair<int, int>, unsigned int>; // (level, index), face
-  std::map<FaceKey, typename FlowAssembler<dim>::FaceCoefficients> faces_found;
-  FlowCellScratch<dim>                    scratch = assembler.make_scratch ();
-  std::vector<FlowPointCoefficients<dim>> values;
-  std::vector<typename FlowAssembler<dim>::FaceCoefficients> faces;
-  for (unsigned int batch = 0; batch < matrix_free.n_cell_batches (); ++batch)
-    for (unsigned int lane = 0;
-         lane < matrix_free.n_active_entries_per_cell_batch (batch);
-         ++lane)
+template <int dim>
+void MatrixFreeFlowOperator<dim>::distribute (
+    const FlowCell              &cell,
+    const CellCoefficients<dim> &coefficients,
+    const typename FlowCoefficientSink<dim>::LocalData &)
+{
+  const unsigned int lanes = VA::size (), n_q = Utilities::pow (n_q_1d, dim),
+                     n_fq  = Utilities::pow (n_q_1d, dim - 1);
+  const unsigned int place = cell_place[cell->active_cell_index ()];
+  const unsigned int batch = place / lanes, lane = place % lanes;
+  for (unsigned int q = 0; q < n_q; ++q)
+  {
+    const FlowPointCoefficients<dim> &c = coefficients.values[q];
+    CellData                         &d = cell_data[batch * n_q + q];
+    for (unsigned int k = 0; k < 2; ++k)
     {
-      const auto cell = matrix_free.get_cell_iterator (batch, lane, 0);
-      const typename DoFHandler<dim>::active_cell_iterator flow_cell (
-          &cell->get_triangulation (), cell->level (), cell->index (), flow_dof_handler);
-      assembler.cell_coefficients (flow_cell, state, scratch, values, faces);
-      if (observer)
-        observer (flow_cell, scratch, values, faces);
-      for (unsigned int q = 0; q < n_q; ++q)
-      {
-        const FlowPointCoefficients<dim> &c = values[q];
-        CellData                         &d = cell_data[batch * n_q + q];
-        for (unsigned int k = 0; k < 2; ++k)
-        {
-          d.mass[k][lane]      = c.mass[k];
-          d.viscosity[k][lane] = c.viscosity[k];
-          d.bulk[k][lane]      = c.bulk[k];
-          d.inertia[k][lane]   = c.inertia[k];
-          d.supg[k][lane]      = c.supg[k];
-          for (unsigned int e = 0; e < dim; ++e)
-            d.advection[k][e][lane] = c.advection[k][e];
-        }
-        d.drag[lane]    = c.drag;
-        d.alpha_s[lane] = c.alpha_s;
-        for (unsigned int e = 0; e < dim; ++e)
-          d.grad_alpha_s[e][lane] = c.grad_alpha_s[e];
-        pressure_coupling = pressure_coupling || c.pressure_coupling;
-      }
-      for (unsigned int f = 0; f < faces.size (); ++f)
-        if (!faces[f].values.empty ())
-          faces_found[{{cell->level (), cell->index ()}, f}] = faces[f];
+      d.mass[k][lane]      = c.mass[k];
+      d.viscosity[k][lane] = c.viscosity[k];
+      d.bulk[k][lane]      = c.bulk[k];
+      d.inertia[k][lane]   = c.inertia[k];
+      d.supg[k][lane]      = c.supg[k];
+      for (unsigned int e = 0; e < dim; ++e)
+        d.advection[k][e][lane] = c.advection[k][e];
     }
+    d.drag[lane]    = c.drag;
+    d.alpha_s[lane] = c.alpha_s;
+    for (unsigned int e = 0; e < dim; ++e)
+      d.grad_alpha_s[e][lane] = c.grad_alpha_s[e];
+    pressure_coupling = pressure_coupling || c.pressure_coupling;
+  }
 
   // the boundary faces' coefficients, matched to MatrixFree's face points
-  const unsigned int first      = matrix_free.n_inner_face_batches (),
-                     n_boundary = matrix_free.n_boundary_face_batches ();
-  face_data.assign (n_boundary * n_fq, FaceData ());
-  FEFaceEvaluation<dim, velocity_degree, n_q_1d, 2 * dim, double> phi (
-      matrix_free, true, 0);
-  for (unsigned int face = first; face < first + n_boundary; ++face)
+  for (unsigned int f = 0; f < coefficients.faces.size (); ++f)
   {
-    phi.reinit (face);
-    for (unsigned int lane = 0; lane < matrix_free.n_active_entries_per_face_batch (face);
-         ++lane)
+    const FaceCoefficients<dim> &face = coefficients.faces[f];
+    // (a face MatrixFree does not hold as a boundary face, e.g. periodic: none to apply)
+    const auto found = boundary_face_place.find (
+        cell->active_cell_index () * GeometryInfo<dim>::faces_per_cell + f);
+    if (face.values.empty () || found == boundary_face_place.end ())
+      continue;
+    const unsigned int face_place = found->second;
+    const unsigned int face_batch = face_place / lanes, face_lane = face_place % lanes;
+    const double       tolerance = 1e-6 * cell->diameter ();
+    for (unsigned int q = 0; q < n_fq; ++q)
     {
-      const auto [cell, face_number] = matrix_free.get_face_iterator (face, lane, true);
-      const auto found =
-          faces_found.find ({{cell->level (), cell->index ()}, face_number});
-      if (found == faces_found.end ())
-        continue;
-      const auto  &points    = found->second.points;
-      const double tolerance = 1e-6 * cell->diameter ();
-      for (unsigned int q = 0; q < n_fq; ++q)
+      const Point<dim> &x       = boundary_face_points[face_place * n_fq + q];
+      unsigned int      nearest = 0;
+      for (unsigned int r = 1; r < face.points.size (); ++r)
+        if (x.distance (face.points[r]) < x.distance (face.points[nearest]))
+          nearest = r;
+      AssertThrow (x.distance (face.points[nearest]) < tolerance,
+                   ExcMessage ("matrix-free flow operator: face points do not match"));
+      const FlowFacePointCoefficients<dim> &c = face.values[nearest];
+      FaceData                             &d = face_data[face_batch * n_fq + q];
+      d.backflow[face_lane]                   = c.backflow;
+      for (unsigned int k = 0; k < 2; ++k)
       {
-        Point<dim> x;
-        for (unsigned int e = 0; e < dim; ++e)
-          x[e] = phi.quadrature_point (q)[e][lane];
-        unsigned int nearest = 0;
-        for (unsigned int r = 1; r < points.size (); ++r)
-          if (x.distance (points[r]) < x.distance (points[nearest]))
-            nearest = r;
-        AssertThrow (x.distance (points[nearest]) < tolerance,
-                     ExcMessage ("matrix-free flow operator: face points do not match"));
-        const FlowFacePointCoefficients<dim> &c = found->second.values[nearest];
-        FaceData                             &d = face_data[(face - first) * n_fq + q];
-        d.backflow[lane]                        = c.backflow;
-        for (unsigned int k = 0; k < 2; ++k)
-        {
-          d.friction[k][lane]  = c.friction[k];
-          d.slips[k][lane]     = c.slips[k] ? 1.0 : 0.0;
-          d.viscosity[k][lane] = c.viscosity[k];
-          d.bulk[k][lane]      = c.bulk[k];
-          d.penalty[k][lane]   = c.penalty[k];
-          d.fraction[k][lane]  = c.fraction[k];
-        }
-        for (unsigned int e = 0; e < dim; ++e)
-          d.wall_normal[e][lane] = c.wall_normal[e];
+        d.friction[k][face_lane]  = c.friction[k];
+        d.slips[k][face_lane]     = c.slips[k] ? 1.0 : 0.0;
+        d.viscosity[k][face_lane] = c.viscosity[k];
+        d.bulk[k][face_lane]      = c.bulk[k];
+        d.penalty[k][face_lane]   = c.penalty[k];
+        d.fraction[k][face_lane]  = c.fraction[k];
       }
+      for (unsigned int e = 0; e < dim; ++e)
+        d.wall_normal[e][face_lane] = c.wall_normal[e];
     }
   }
 }

@@ -15,16 +15,14 @@ using namespace dealii;
 template <int dim>
 VelocityMultigrid<dim>::VelocityMultigrid (const LinearSolverParameters &parameters)
     : parameters (parameters), coarse_fe (FE_Q<dim> (1), 2 * dim), fine_scalar (2),
-      coarse_scalar (1), jacobi (std::make_shared<NodeBlockJacobi> ())
+      jacobi (std::make_shared<NodeBlockJacobi> ())
 {
 }
 
 template <int dim>
-void VelocityMultigrid<dim>::reinit (const Mapping<dim>                &mapping_,
-                                     const MatrixFreeFlowOperator<dim> &op_)
+void VelocityMultigrid<dim>::reinit (const MatrixFreeFlowOperator<dim> &op_)
 {
   op                          = &op_;
-  mapping                     = &mapping_;
   block.op                    = op;
   const DoFHandler<dim> &fine = op->velocity_dofs ();
   coarse_dofs.reinit (fine.get_triangulation ());
@@ -83,16 +81,6 @@ void VelocityMultigrid<dim>::reinit (const Mapping<dim>                &mapping_
     if (!seen[i])
       jacobi->singles.push_back (i);
   jacobi->inverse.assign (jacobi->nodes.size () * 4 * dim * dim, 0.0);
-
-  const QGauss<dim>     quadrature (3);
-  const QGauss<dim - 1> face_quadrature (3);
-  const UpdateFlags     flags = update_values | update_gradients | update_JxW_values;
-  coarse_values =
-      std::make_unique<FEValues<dim>> (*mapping, coarse_scalar, quadrature, flags);
-  coarse_face_values = std::make_unique<FEFaceValues<dim>> (
-      *mapping, coarse_scalar, face_quadrature, flags | update_normal_vectors);
-  fine_face_values = std::make_unique<FEFaceValues<dim>> (
-      *mapping, fine_scalar, face_quadrature, flags | update_normal_vectors);
 }
 
 template <int dim>
@@ -144,215 +132,223 @@ void VelocityMultigrid<dim>::begin_update ()
   }
 }
 
-template <int dim>
-void VelocityMultigrid<dim>::add_cell (
-    const FlowCell                                                   &cell,
-    const FlowCellScratch<dim>                                       &scratch,
-    const std::vector<FlowPointCoefficients<dim>>                    &values,
-    const std::vector<typename FlowAssembler<dim>::FaceCoefficients> &faces)
+namespace
 {
-  assemble_coarse_cell (cell, values, faces);
-  add_fine_diagonal (cell, scratch, values, faces);
+/** The cell bilinear form within phase k between the test function phi_a e_d and the
+ * trial function phi_b e_e, [d][e] (the drag to the other phase is -drag phi_a phi_b on
+ * its diagonal). */
+template <int dim>
+Tensor<2, dim> phase_block (const FlowPointCoefficients<dim> &c,
+                            const unsigned int                k,
+                            const double                      phi_a,
+                            const double                      phi_b,
+                            const Tensor<1, dim>             &ga,
+                            const Tensor<1, dim>             &gb)
+{
+  const double advective_a = c.advection[k] * ga, advective_b = c.advection[k] * gb;
+  const double same = (c.mass[k] + c.drag) * phi_a * phi_b +
+                      c.inertia[k] * phi_a * advective_b +
+                      c.supg[k] * advective_a * advective_b + c.viscosity[k] * (ga * gb);
+  Tensor<2, dim> block;
+  for (unsigned int d = 0; d < dim; ++d)
+  {
+    for (unsigned int e = 0; e < dim; ++e)
+      block[d][e] = c.viscosity[k] * gb[d] * ga[e] + c.bulk[k] * gb[e] * ga[d];
+    block[d][d] += same;
+  }
+  return block;
 }
 
+/** The boundary bilinear form of phase k between phi_a e_d and phi_b e_e, [d][e], with
+ * the mapped normal n_h: friction, backflow (gas) and the Nitsche terms of a slipping
+ * phase. */
 template <int dim>
-void VelocityMultigrid<dim>::assemble_coarse_cell (
-    const FlowCell                                                   &cell,
-    const std::vector<FlowPointCoefficients<dim>>                    &values,
-    const std::vector<typename FlowAssembler<dim>::FaceCoefficients> &faces)
+Tensor<2, dim> face_block (const FlowFacePointCoefficients<dim> &c,
+                           const unsigned int                    k,
+                           const Tensor<1, dim>                 &n_h,
+                           const double                          phi_a,
+                           const double                          phi_b,
+                           const Tensor<1, dim>                 &ga,
+                           const Tensor<1, dim>                 &gb)
 {
-  const unsigned int n1 = coarse_scalar.n_dofs_per_cell (), n = 2 * dim * n1;
-  FullMatrix<double> local (n, n);
-  auto               at = [n1] (unsigned int c, unsigned int a) { return c * n1 + a; };
-  const typename Triangulation<dim>::cell_iterator tria_cell (cell);
-  coarse_values->reinit (tria_cell);
-  const auto         &fv = *coarse_values;
-  std::vector<double> advective (n1);
-  for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
-  {
-    const FlowPointCoefficients<dim> &c   = values[q];
-    const double                      JxW = fv.JxW (q);
-    for (unsigned int k = 0; k < 2; ++k)
+  const Tensor<1, dim> &nw = c.wall_normal;
+  Tensor<2, dim>        block;
+  for (unsigned int d = 0; d < dim; ++d)
+    for (unsigned int e = 0; e < dim; ++e)
     {
-      for (unsigned int b = 0; b < n1; ++b)
-        advective[b] = c.advection[k] * fv.shape_grad (b, q);
-      for (unsigned int a = 0; a < n1; ++a)
-        for (unsigned int b = 0; b < n1; ++b)
-        {
-          const double phi_ab = fv.shape_value (a, q) * fv.shape_value (b, q);
-          const auto  &ga = fv.shape_grad (a, q), &gb = fv.shape_grad (b, q);
-          const double same = (c.mass[k] + c.drag) * phi_ab +
-                              c.inertia[k] * fv.shape_value (a, q) * advective[b] +
-                              c.supg[k] * advective[a] * advective[b] +
-                              c.viscosity[k] * (ga * gb);
-          for (unsigned int d = 0; d < dim; ++d)
-          {
-            local (at (k * dim + d, a), at (k * dim + d, b)) += same * JxW;
-            local (at (k * dim + d, a), at ((1 - k) * dim + d, b)) -=
-                c.drag * phi_ab * JxW;
-            for (unsigned int e = 0; e < dim; ++e)
-              local (at (k * dim + d, a), at (k * dim + e, b)) +=
-                  (c.viscosity[k] * gb[d] * ga[e] + c.bulk[k] * gb[e] * ga[d]) * JxW;
-          }
-        }
+      double value =
+          c.friction[k] * ((d == e ? 1.0 : 0.0) - n_h[d] * n_h[e]) * phi_a * phi_b;
+      if (k == 0 && d == e)
+        value += c.backflow * phi_a * phi_b;
+      if (c.slips[k])
+      {
+        const double stress_b =
+            2 * c.viscosity[k] * nw[e] * (gb * nw) + c.bulk[k] * gb[e];
+        const double stress_a =
+            2 * c.viscosity[k] * nw[d] * (ga * nw) + c.bulk[k] * ga[d];
+        value += -stress_b * phi_a * nw[d] - stress_a * phi_b * nw[e] +
+                 c.penalty[k] * phi_a * nw[d] * phi_b * nw[e];
+      }
+      block[d][e] = value;
     }
-  }
-  for (unsigned int f = 0; f < faces.size (); ++f)
-  {
-    if (faces[f].values.empty ())
-      continue;
-    coarse_face_values->reinit (tria_cell, f);
-    const auto &ff = *coarse_face_values;
-    for (unsigned int q = 0; q < ff.n_quadrature_points; ++q)
-    {
-      const FlowFacePointCoefficients<dim> &c   = faces[f].values[q];
-      const Tensor<1, dim>                  n_h = ff.normal_vector (q);
-      const Tensor<1, dim>                 &nw  = c.wall_normal;
-      const double                          JxW = ff.JxW (q);
-      for (unsigned int k = 0; k < 2; ++k)
-        for (unsigned int a = 0; a < n1; ++a)
-          for (unsigned int b = 0; b < n1; ++b)
-          {
-            const double phi_a = ff.shape_value (a, q), phi_b = ff.shape_value (b, q);
-            const auto  &ga = ff.shape_grad (a, q), &gb = ff.shape_grad (b, q);
-            for (unsigned int d = 0; d < dim; ++d)
-              for (unsigned int e = 0; e < dim; ++e)
-              {
-                double value = c.friction[k] * ((d == e ? 1.0 : 0.0) - n_h[d] * n_h[e]) *
-                               phi_a * phi_b;
-                if (k == 0 && d == e)
-                  value += c.backflow * phi_a * phi_b;
-                if (c.slips[k])
-                {
-                  const double stress_b =
-                      2 * c.viscosity[k] * nw[e] * (gb * nw) + c.bulk[k] * gb[e];
-                  const double stress_a =
-                      2 * c.viscosity[k] * nw[d] * (ga * nw) + c.bulk[k] * ga[d];
-                  value += -stress_b * phi_a * nw[d] - stress_a * phi_b * nw[e] +
-                           c.penalty[k] * phi_a * nw[d] * phi_b * nw[e];
-                }
-                local (at (k * dim + d, a), at (k * dim + e, b)) += value * JxW;
-              }
-          }
-    }
-  }
+  return block;
+}
+} // namespace
+
+template <int dim>
+void VelocityMultigrid<dim>::local_cell (
+    const FlowCell                                &cell,
+    const FlowCellScratch<dim>                    &s,
+    const std::vector<FlowPointCoefficients<dim>> &values,
+    LocalData                                     &local) const
+{
+  // the coarse basis is the assembly's Q1 pressure basis, the fine one its Q2 velocity
+  // basis (the same mapping and quadrature); DoF (c, a) of either at c * n + a
+  const unsigned int n1 = s.indices.n_pressure_basis, n2 = s.indices.n_velocity_basis;
+  local.matrices[0].reinit (2 * dim * n1, 2 * dim * n1);
+  local.vectors[0].reinit (2 * dim * 2 * dim * n2);
+  local.local_dof_indices[0].resize (2 * dim * n1);
+  local.local_dof_indices[1].resize (2 * dim * n2);
   const typename DoFHandler<dim>::active_cell_iterator coarse_cell (
       &cell->get_triangulation (), cell->level (), cell->index (), &coarse_dofs);
-  std::vector<types::global_dof_index> system (n), dofs (n);
-  coarse_cell->get_dof_indices (system);
+  const typename DoFHandler<dim>::active_cell_iterator fine_cell (
+      &cell->get_triangulation (), cell->level (), cell->index (), &op->velocity_dofs ());
+  std::vector<types::global_dof_index> coarse_system (2 * dim * n1),
+      fine_system (2 * dim * n2);
+  coarse_cell->get_dof_indices (coarse_system);
+  fine_cell->get_dof_indices (fine_system);
+  const FESystem<dim> &fine_fe = op->velocity_element ();
   for (unsigned int c = 0; c < 2 * dim; ++c)
+  {
     for (unsigned int a = 0; a < n1; ++a)
-      dofs[at (c, a)] = system[coarse_fe.component_to_system_index (c, a)];
-  coarse_constraints.distribute_local_to_global (local, dofs, coarse_matrix);
-}
+      local.local_dof_indices[0][c * n1 + a] =
+          coarse_system[coarse_fe.component_to_system_index (c, a)];
+    for (unsigned int a = 0; a < n2; ++a)
+      local.local_dof_indices[1][c * n2 + a] =
+          fine_system[fine_fe.component_to_system_index (c, a)];
+  }
 
-template <int dim>
-void VelocityMultigrid<dim>::add_fine_diagonal (
-    const FlowCell                                                   &cell,
-    const FlowCellScratch<dim>                                       &s,
-    const std::vector<FlowPointCoefficients<dim>>                    &values,
-    const std::vector<typename FlowAssembler<dim>::FaceCoefficients> &faces)
-{
-  // local[o](c, a) = A((c, a), ((c + o) mod 2 dim, a)): the node blocks of this cell
-  const unsigned int          n2 = fine_scalar.n_dofs_per_cell (), n = 2 * dim * n2;
-  std::vector<Vector<double>> local (2 * dim, Vector<double> (n));
-  auto at = [n2] (unsigned int c, unsigned int a) { return c * n2 + a; };
-  auto add_entry =
-      [&] (unsigned int row, unsigned int column, unsigned int a, double value)
-  { local[(column + 2 * dim - row) % (2 * dim)](at (row, a)) += value; };
+  FullMatrix<double> &coarse = local.matrices[0];
+  Vector<double>     &blocks = local.vectors[0];
   for (unsigned int q = 0; q < s.JxW.size (); ++q)
   {
     const FlowPointCoefficients<dim> &c = values[q];
     const double                      w = s.JxW[q];
-    for (unsigned int a = 0; a < n2; ++a)
+    for (unsigned int k = 0; k < 2; ++k)
     {
-      const double          phi  = s.phi[q][a];
-      const Tensor<1, dim> &grad = s.grad_phi[q][a];
-      for (unsigned int k = 0; k < 2; ++k)
+      const unsigned int o = k * dim, other = (1 - k) * dim;
+      for (unsigned int a = 0; a < n1; ++a)
+        for (unsigned int b = 0; b < n1; ++b)
+        {
+          const double         phi_a = s.phi_p[q][a], phi_b = s.phi_p[q][b];
+          const Tensor<2, dim> block =
+              phase_block (c, k, phi_a, phi_b, s.grad_phi_p[q][a], s.grad_phi_p[q][b]);
+          for (unsigned int d = 0; d < dim; ++d)
+          {
+            for (unsigned int e = 0; e < dim; ++e)
+              coarse ((o + d) * n1 + a, (o + e) * n1 + b) += block[d][e] * w;
+            coarse ((o + d) * n1 + a, (other + d) * n1 + b) -= c.drag * phi_a * phi_b * w;
+          }
+        }
+      // the node blocks: entry ((o + d, a), ((o + d + offset) mod 2 dim, a)) at
+      // offset * 2 dim n2 + (o + d) n2 + a
+      for (unsigned int a = 0; a < n2; ++a)
       {
-        const double advective = c.advection[k] * grad;
-        const double base =
-            (c.mass[k] + c.drag) * phi * phi + c.inertia[k] * phi * advective +
-            c.supg[k] * advective * advective + c.viscosity[k] * (grad * grad);
+        const double         phi = s.phi[q][a];
+        const Tensor<2, dim> block =
+            phase_block (c, k, phi, phi, s.grad_phi[q][a], s.grad_phi[q][a]);
         for (unsigned int d = 0; d < dim; ++d)
         {
-          add_entry (k * dim + d, (1 - k) * dim + d, a, -c.drag * phi * phi * w);
+          const unsigned int row = (o + d) * n2 + a;
           for (unsigned int e = 0; e < dim; ++e)
-            add_entry (k * dim + d,
-                       k * dim + e,
-                       a,
-                       ((d == e ? base : 0.0) +
-                        (c.viscosity[k] + c.bulk[k]) * grad[d] * grad[e]) *
-                           w);
+            blocks[((e + 2 * dim - d) % (2 * dim)) * 2 * dim * n2 + row] +=
+                block[d][e] * w;
+          blocks[((other + 2 * dim - o) % (2 * dim)) * 2 * dim * n2 + row] -=
+              c.drag * phi * phi * w;
         }
       }
     }
   }
-  const typename Triangulation<dim>::cell_iterator tria_cell (cell);
-  for (unsigned int f = 0; f < faces.size (); ++f)
+}
+
+template <int dim>
+void VelocityMultigrid<dim>::local_face (const FlowCell &,
+                                         const unsigned int,
+                                         const FlowCellScratch<dim>  &s,
+                                         const FaceCoefficients<dim> &face,
+                                         LocalData                   &local) const
+{
+  const unsigned int  n1 = s.indices.n_pressure_basis, n2 = s.indices.n_velocity_basis;
+  const auto         &ff     = s.face_values;
+  FullMatrix<double> &coarse = local.matrices[0];
+  Vector<double>     &blocks = local.vectors[0];
+  for (unsigned int q = 0; q < ff.n_quadrature_points; ++q)
   {
-    if (faces[f].values.empty ())
-      continue;
-    fine_face_values->reinit (tria_cell, f);
-    const auto &ff = *fine_face_values;
-    for (unsigned int q = 0; q < ff.n_quadrature_points; ++q)
+    const FlowFacePointCoefficients<dim> &c   = face.values[q];
+    const Tensor<1, dim>                  n_h = ff.normal_vector (q);
+    const double                          w   = ff.JxW (q);
+    for (unsigned int k = 0; k < 2; ++k)
     {
-      const FlowFacePointCoefficients<dim> &c   = faces[f].values[q];
-      const Tensor<1, dim>                  n_h = ff.normal_vector (q);
-      const Tensor<1, dim>                 &nw  = c.wall_normal;
-      for (unsigned int a = 0; a < n2; ++a)
-      {
-        const double          phi  = ff.shape_value (a, q);
-        const Tensor<1, dim> &grad = ff.shape_grad (a, q);
-        for (unsigned int k = 0; k < 2; ++k)
+      const unsigned int o = k * dim;
+      for (unsigned int a = 0; a < n1; ++a)
+        for (unsigned int b = 0; b < n1; ++b)
+        {
+          const unsigned int   i = s.indices.pressure[a], j = s.indices.pressure[b];
+          const Tensor<2, dim> block = face_block (c,
+                                                   k,
+                                                   n_h,
+                                                   ff.shape_value (i, q),
+                                                   ff.shape_value (j, q),
+                                                   ff.shape_grad (i, q),
+                                                   ff.shape_grad (j, q));
           for (unsigned int d = 0; d < dim; ++d)
             for (unsigned int e = 0; e < dim; ++e)
-            {
-              double value =
-                  c.friction[k] * ((d == e ? 1.0 : 0.0) - n_h[d] * n_h[e]) * phi * phi;
-              if (k == 0 && d == e)
-                value += c.backflow * phi * phi;
-              if (c.slips[k])
-              {
-                const double stress_d =
-                    2 * c.viscosity[k] * nw[d] * (grad * nw) + c.bulk[k] * grad[d];
-                const double stress_e =
-                    2 * c.viscosity[k] * nw[e] * (grad * nw) + c.bulk[k] * grad[e];
-                value += -stress_e * phi * nw[d] - stress_d * phi * nw[e] +
-                         c.penalty[k] * phi * phi * nw[d] * nw[e];
-              }
-              add_entry (k * dim + d, k * dim + e, a, value * ff.JxW (q));
-            }
+              coarse ((o + d) * n1 + a, (o + e) * n1 + b) += block[d][e] * w;
+        }
+      for (unsigned int a = 0; a < n2; ++a)
+      {
+        const unsigned int   i     = s.indices.velocity[0][a];
+        const double         phi   = ff.shape_value (i, q);
+        const Tensor<1, dim> grad  = ff.shape_grad (i, q);
+        const Tensor<2, dim> block = face_block (c, k, n_h, phi, phi, grad, grad);
+        for (unsigned int d = 0; d < dim; ++d)
+          for (unsigned int e = 0; e < dim; ++e)
+            blocks[((e + 2 * dim - d) % (2 * dim)) * 2 * dim * n2 + (o + d) * n2 + a] +=
+                block[d][e] * w;
       }
     }
   }
-  const typename DoFHandler<dim>::active_cell_iterator fine_cell (
-      &cell->get_triangulation (), cell->level (), cell->index (), &op->velocity_dofs ());
-  const FESystem<dim>                 &fe = op->velocity_element ();
-  std::vector<types::global_dof_index> system (n), dofs (n);
-  fine_cell->get_dof_indices (system);
-  for (unsigned int c = 0; c < 2 * dim; ++c)
-    for (unsigned int a = 0; a < n2; ++a)
-      dofs[at (c, a)] = system[fe.component_to_system_index (c, a)];
-  // entries between unconstrained DoFs as they are; a constrained DoF adds w^2 times
-  // its diagonal to each master's diagonal (the diagonal of C^T A C with one entry per
-  // row, cross terms left out): w, not w^2, would make the masters of a no-normal-flux
-  // constraint (w = -n_x/n_y < 0) lose diagonal
-  const AffineConstraints<double> &constraints = op->velocity_dof_constraints ();
+}
+
+template <int dim>
+void VelocityMultigrid<dim>::distribute (const FlowCell &,
+                                         const CellCoefficients<dim> &,
+                                         const LocalData &local)
+{
+  coarse_constraints.distribute_local_to_global (
+      local.matrices[0], local.local_dof_indices[0], coarse_matrix);
+  // node-block entries between unconstrained DoFs as they are; a constrained DoF adds
+  // w^2 times its diagonal to each master's diagonal (the diagonal of C^T A C with one
+  // entry per row, cross terms left out): w, not w^2, would make the masters of a
+  // no-normal-flux constraint (w = -n_x/n_y < 0) lose diagonal
+  const AffineConstraints<double> &constraints       = op->velocity_dof_constraints ();
+  const std::vector<types::global_dof_index> &dofs   = local.local_dof_indices[1];
+  const Vector<double>                       &blocks = local.vectors[0];
+  const unsigned int                          n = dofs.size (), n2 = n / (2 * dim);
   for (unsigned int c = 0; c < 2 * dim; ++c)
     for (unsigned int a = 0; a < n2; ++a)
     {
-      const unsigned int i = at (c, a);
+      const unsigned int i = c * n2 + a;
       if (constraints.is_constrained (dofs[i]))
       {
         if (const auto *masters = constraints.get_constraint_entries (dofs[i]))
           for (const auto &[master, weight] : *masters)
-            entries[0](master) += weight * weight * local[0](i);
+            entries[0](master) += weight * weight * blocks[i];
         continue;
       }
       for (unsigned int o = 0; o < 2 * dim; ++o)
-        if (o == 0 || !constraints.is_constrained (dofs[at ((c + o) % (2 * dim), a)]))
-          entries[o](dofs[i]) += local[o](i);
+        if (o == 0 || !constraints.is_constrained (dofs[((c + o) % (2 * dim)) * n2 + a]))
+          entries[o](dofs[i]) += blocks[o * n + i];
     }
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <wetbed/assembly/flow/flow_assembler.h>
+#include <wetbed/assembly/flow/flow_coefficient_sink.h>
 #include <wetbed/solvers/assembled_flow_operator.h>
 #include <wetbed/solvers/flow_operator.h>
 
@@ -16,6 +17,7 @@
 #include <array>
 #include <functional>
 #include <memory>
+#include <unordered_map>
 #include <vector>
 
 namespace wetbed
@@ -25,7 +27,10 @@ namespace wetbed
  * "Matrix-free flow operator"): sum-factorised cell and boundary-face integrals
  * (deal.II MatrixFree, FEEvaluation / FEFaceEvaluation) of the bilinear form whose
  * coefficients the flow terms give at the quadrature points (FlowPointCoefficients,
- * FlowFacePointCoefficients), evaluated once per assembly.
+ * FlowFacePointCoefficients), evaluated once per assembly: in the assembly's pass
+ * over the cells, whose copier hands each cell's coefficients to distribute() (a
+ * FlowCoefficientSink), which stores them at the cell's place in the cell batches and,
+ * on boundary faces, at MatrixFree's face points.
  *
  * MatrixFree needs vectors whose locally owned range is contiguous, which the flow
  * DoF handler's block numbering (velocities | pressure) is not on several ranks; the
@@ -35,7 +40,7 @@ namespace wetbed
  * diagonal of the assembled operator's constrained rows (set_constrained_diagonal).
  */
 template <int dim>
-class MatrixFreeFlowOperator : public FlowOperator
+class MatrixFreeFlowOperator : public FlowOperator, public FlowCoefficientSink<dim>
 {
 public:
   using VA          = dealii::VectorizedArray<double>;
@@ -54,21 +59,15 @@ public:
                const dealii::AffineConstraints<double> &flow_constraints);
 
   using FlowCell = typename dealii::DoFHandler<dim>::active_cell_iterator;
-  /** Called on each locally owned cell during update() with what the assembler
-   * evaluated there (the scratch holds the cell's FE values): the velocity multigrid
-   * builds its coarse matrix and diagonal from it in the same pass. */
-  using CellObserver = std::function<void (
-      const FlowCell &,
-      const FlowCellScratch<dim> &,
-      const std::vector<FlowPointCoefficients<dim>> &,
-      const std::vector<typename FlowAssembler<dim>::FaceCoefficients> &)>;
 
-  /** The coefficients at every quadrature point for the linearisation `state`, from the
-   * terms of `assembler` (one of its terms without coefficients is an error naming it).
-   */
-  void update (const FlowAssembler<dim>     &assembler,
-               const FlowAssemblyState<dim> &state,
-               const CellObserver           &observer = CellObserver ());
+  /** Before the assembly pass of a new linearisation: the coefficient storage cleared
+   * (a term of `assembler` without coefficients is an error naming it). */
+  void begin_update (const FlowAssembler<dim> &assembler);
+  /** The coefficients of one locally owned (flow DoF handler) cell and of its boundary
+   * faces, stored at its places in the cell and face batches (the assembly's copier). */
+  void distribute (const FlowCell                                     &cell,
+                   const CellCoefficients<dim>                        &coefficients,
+                   const typename FlowCoefficientSink<dim>::LocalData &local) override;
 
   /** The diagonal entries of the constrained rows, taken from `assembled`. */
   void set_constrained_diagonal (const AssembledFlowOperator &assembled);
@@ -149,6 +148,8 @@ private:
                              const LocalVector *src_u,
                              const LocalVector *src_p,
                              unsigned int       first_dof = 0) const;
+  /** Where each locally owned cell and boundary face sits in the batches. */
+  void find_batch_places ();
   void build_maps (const dealii::DoFHandler<dim>           &flow_dof_handler,
                    const std::vector<dealii::IndexSet>     &owned,
                    const dealii::AffineConstraints<double> &flow_constraints);
@@ -163,6 +164,12 @@ private:
   bool                                pressure_coupling = false;
   std::vector<CellData>               cell_data; // [batch * n_q + q]
   std::vector<FaceData>               face_data; // [(face - inner) * n_face_q + q]
+  // batch * lanes + lane of each locally owned cell, by active cell index
+  std::vector<unsigned int> cell_place;
+  // (face - inner) * lanes + lane of each boundary face, by active cell index * faces
+  // per cell + face number, and MatrixFree's points on it, [place * n_face_q + q]
+  std::unordered_map<unsigned int, unsigned int> boundary_face_place;
+  std::vector<dealii::Point<dim>>                boundary_face_points;
   // for block b, the local index in the MatrixFree vector of each locally owned
   // element of the block (in the order of the block's owned index set)
   std::array<std::vector<unsigned int>, 2> local_of_block;

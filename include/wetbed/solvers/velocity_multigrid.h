@@ -6,7 +6,6 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_system.h>
-#include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/precondition.h>
@@ -28,28 +27,45 @@ namespace wetbed
  * coarse correction on the Q1 velocity space
  * (polynomial transfer, deal.II MGTwoLevelTransfer) by one ML V-cycle on the Q1 matrix
  * of the same bilinear form, assembled from the same quadrature-point coefficients.
+ *
+ * The coarse matrix and the node blocks are built in the flow assembly's pass over the
+ * cells (a FlowCoefficientSink): the local matrices from the coefficients and the
+ * assembly's FE values (the Q1 pressure basis is the coarse basis, the Q2 velocity
+ * basis the fine one) on its worker threads, their distribution in its copier.
  */
 template <int dim>
-class VelocityMultigrid
+class VelocityMultigrid : public FlowCoefficientSink<dim>
 {
 public:
   using LocalVector = dealii::LinearAlgebra::distributed::Vector<double>;
   using FlowCell    = typename MatrixFreeFlowOperator<dim>::FlowCell;
+  using LocalData   = typename FlowCoefficientSink<dim>::LocalData;
 
   explicit VelocityMultigrid (const LinearSolverParameters &parameters);
 
   /** For a new mesh (after the operator's reinit): the Q1 space and its constraints,
    * the coarse sparsity, the transfer, the node pairs of the block Jacobi. */
-  void reinit (const dealii::Mapping<dim>        &mapping,
-               const MatrixFreeFlowOperator<dim> &op);
+  void reinit (const MatrixFreeFlowOperator<dim> &op);
 
-  /** The coarse matrix and the Q2 diagonal blocks for new coefficients: begin, then
-   * add_cell on every locally owned cell (the operator's update observer), then end. */
+  /** The coarse matrix and the Q2 diagonal blocks for new coefficients: begin, then the
+   * flow assembly's pass with this sink, then end (the node blocks inverted). */
   void begin_update ();
-  void add_cell (const FlowCell                                &cell,
-                 const FlowCellScratch<dim>                    &scratch,
-                 const std::vector<FlowPointCoefficients<dim>> &values,
-                 const std::vector<typename FlowAssembler<dim>::FaceCoefficients> &faces);
+  /** The cell's part of the coarse matrix (matrices[0], its Q1 DoFs in
+   * local_dof_indices[0]) and of the node blocks (vectors[0], its Q2 DoFs in
+   * local_dof_indices[1]). */
+  void local_cell (const FlowCell                                &cell,
+                   const FlowCellScratch<dim>                    &scratch,
+                   const std::vector<FlowPointCoefficients<dim>> &values,
+                   LocalData                                     &local) const override;
+  /** The boundary terms of face f added to the cell's local matrices. */
+  void local_face (const FlowCell              &cell,
+                   unsigned int                 f,
+                   const FlowCellScratch<dim>  &scratch,
+                   const FaceCoefficients<dim> &face,
+                   LocalData                   &local) const override;
+  void distribute (const FlowCell              &cell,
+                   const CellCoefficients<dim> &coefficients,
+                   const LocalData             &local) override;
   void end_update ();
 
   /** The coarse AMG and the smoother's eigenvalue estimate (expensive: by the reuse
@@ -88,22 +104,12 @@ private:
   using Smoother =
       dealii::PreconditionChebyshev<VelocityBlock, LocalVector, NodeBlockJacobi>;
 
-  void assemble_coarse_cell (
-      const FlowCell                                                   &cell,
-      const std::vector<FlowPointCoefficients<dim>>                    &values,
-      const std::vector<typename FlowAssembler<dim>::FaceCoefficients> &faces);
-  void add_fine_diagonal (
-      const FlowCell                                                   &cell,
-      const FlowCellScratch<dim>                                       &scratch,
-      const std::vector<FlowPointCoefficients<dim>>                    &values,
-      const std::vector<typename FlowAssembler<dim>::FaceCoefficients> &faces);
   void make_coarse_constraints ();
 
   const LinearSolverParameters                &parameters;
-  const MatrixFreeFlowOperator<dim>           *op      = nullptr;
-  const dealii::Mapping<dim>                  *mapping = nullptr;
+  const MatrixFreeFlowOperator<dim>           *op = nullptr;
   dealii::FESystem<dim>                        coarse_fe;
-  dealii::FE_Q<dim>                            fine_scalar, coarse_scalar;
+  dealii::FE_Q<dim>                            fine_scalar;
   dealii::DoFHandler<dim>                      coarse_dofs;
   dealii::AffineConstraints<double>            coarse_constraints;
   dealii::IndexSet                             coarse_owned;
@@ -117,9 +123,7 @@ private:
   // 2 dim, a)) at the DoF of component c and basis function a
   std::vector<LocalVector> entries;
   // work
-  std::unique_ptr<dealii::FEValues<dim>>     coarse_values;
-  std::unique_ptr<dealii::FEFaceValues<dim>> coarse_face_values, fine_face_values;
-  mutable LocalVector                        residual, coarse_residual, coarse_solution;
+  mutable LocalVector residual, coarse_residual, coarse_solution;
   mutable dealii::TrilinosWrappers::MPI::Vector coarse_rhs_t, coarse_solution_t;
 };
 } // namespace wetbed

@@ -128,18 +128,42 @@ void FlowAssembler<dim>::prepare_face (const CellIterator           &cell,
 }
 
 template <int dim>
+FlowAssembler<dim>::CellCopy::CellCopy (const unsigned int n_dofs,
+                                        const unsigned int n_sinks)
+    : system (n_dofs), sink_data (n_sinks)
+{
+}
+
+template <int dim>
 void FlowAssembler<dim>::local_system (const CellIterator           &cell,
                                        const FlowAssemblyState<dim> &state,
+                                       const Sinks                  &sinks,
                                        FlowCellScratch<dim>         &scratch,
-                                       FlowCellCopy                 &copy) const
+                                       CellCopy                     &copy) const
 {
-  copy.matrix = 0;
-  copy.schur  = 0;
-  copy.rhs    = 0;
-  cell->get_dof_indices (copy.dofs);
+  FlowCellCopy &system = copy.system;
+  system.matrix        = 0;
+  system.schur         = 0;
+  system.rhs           = 0;
+  copy.cell            = cell;
+  cell->get_dof_indices (system.dofs);
   prepare_cell (cell, state, scratch);
   for (const auto &term : terms)
-    term->cell (scratch, state, copy);
+    term->cell (scratch, state, system);
+  CellCoefficients<dim> &coefficients      = copy.coefficients;
+  const bool             with_coefficients = !sinks.empty ();
+  if (with_coefficients)
+  {
+    point_coefficients (scratch, state, coefficients.values);
+    for (unsigned int i = 0; i < sinks.size (); ++i)
+      sinks[i]->local_cell (cell, scratch, coefficients.values, copy.sink_data[i]);
+    coefficients.faces.resize (cell->n_faces ());
+    for (auto &face : coefficients.faces)
+    {
+      face.values.clear ();
+      face.points.clear ();
+    }
+  }
   for (const unsigned int f : cell->face_indices ())
   {
     if (!face_has_terms (cell, f))
@@ -148,9 +172,44 @@ void FlowAssembler<dim>::local_system (const CellIterator           &cell,
     prepare_face (cell, f, state, scratch);
     for (const auto &term : terms)
       if (term->acts_on_boundary (id))
-        term->face (cell, f, scratch, state, copy);
+        term->face (cell, f, scratch, state, system);
+    if (!with_coefficients)
+      continue;
+    face_coefficients (cell, f, scratch, state, coefficients.faces[f]);
+    for (unsigned int i = 0; i < sinks.size (); ++i)
+      sinks[i]->local_face (cell, f, scratch, coefficients.faces[f], copy.sink_data[i]);
   }
-  copy.captured = cell->at_boundary ();
+  system.captured = cell->at_boundary ();
+}
+
+template <int dim>
+void FlowAssembler<dim>::point_coefficients (
+    const FlowCellScratch<dim>              &scratch,
+    const FlowAssemblyState<dim>            &state,
+    std::vector<FlowPointCoefficients<dim>> &values) const
+{
+  const unsigned int n_q = scratch.JxW.size ();
+  values.assign (n_q, FlowPointCoefficients<dim> ());
+  for (unsigned int q = 0; q < n_q; ++q)
+    for (const auto &term : terms)
+      term->coefficients (scratch, state, q, values[q]);
+}
+
+template <int dim>
+void FlowAssembler<dim>::face_coefficients (const CellIterator           &cell,
+                                            const unsigned int            f,
+                                            const FlowCellScratch<dim>   &scratch,
+                                            const FlowAssemblyState<dim> &state,
+                                            FaceCoefficients<dim>        &face) const
+{
+  const auto         id   = cell->face (f)->boundary_id ();
+  const unsigned int n_fq = scratch.face_values.n_quadrature_points;
+  face.values.assign (n_fq, FlowFacePointCoefficients<dim> ());
+  face.points = scratch.face_values.get_quadrature_points ();
+  for (unsigned int q = 0; q < n_fq; ++q)
+    for (const auto &term : terms)
+      if (term->acts_on_boundary (id))
+        term->face_coefficients (cell, f, scratch, state, q, face.values[q]);
 }
 
 template <int dim>
@@ -167,53 +226,12 @@ bool FlowAssembler<dim>::face_has_terms (const CellIterator &cell,
 }
 
 template <int dim>
-FlowCellScratch<dim> FlowAssembler<dim>::make_scratch () const
-{
-  const auto &fe = dynamic_cast<const FESystem<dim> &> (flow_dof_handler.get_fe ());
-  return FlowCellScratch<dim> (
-      mapping, fe, alpha_dof_handler.get_fe (), QGauss<dim> (3), QGauss<dim - 1> (3));
-}
-
-template <int dim>
 std::string FlowAssembler<dim>::term_without_coefficients () const
 {
   for (const auto &term : terms)
     if (term->has_matrix () && !term->has_coefficients ())
       return term->name ();
   return "";
-}
-
-template <int dim>
-void FlowAssembler<dim>::cell_coefficients (
-    const CellIterator                      &cell,
-    const FlowAssemblyState<dim>            &state,
-    FlowCellScratch<dim>                    &scratch,
-    std::vector<FlowPointCoefficients<dim>> &values,
-    std::vector<FaceCoefficients>           &faces) const
-{
-  prepare_cell (cell, state, scratch);
-  const unsigned int n_q = scratch.JxW.size ();
-  values.assign (n_q, FlowPointCoefficients<dim> ());
-  for (unsigned int q = 0; q < n_q; ++q)
-    for (const auto &term : terms)
-      term->coefficients (scratch, state, q, values[q]);
-  faces.resize (cell->n_faces ());
-  for (const unsigned int f : cell->face_indices ())
-  {
-    faces[f].values.clear ();
-    faces[f].points.clear ();
-    if (!face_has_terms (cell, f))
-      continue;
-    const auto id = cell->face (f)->boundary_id ();
-    prepare_face (cell, f, state, scratch);
-    const unsigned int n_fq = scratch.face_values.n_quadrature_points;
-    faces[f].values.assign (n_fq, FlowFacePointCoefficients<dim> ());
-    faces[f].points = scratch.face_values.get_quadrature_points ();
-    for (unsigned int q = 0; q < n_fq; ++q)
-      for (const auto &term : terms)
-        if (term->acts_on_boundary (id))
-          term->face_coefficients (cell, f, scratch, state, q, faces[f].values[q]);
-  }
 }
 
 template <int dim>
@@ -255,7 +273,8 @@ void FlowAssembler<dim>::assemble (const FlowAssemblyState<dim>    &state,
                                    AssembledFlowOperator           &flow_operator,
                                    BlockVector                     &rhs,
                                    const BoundaryRowCapture        &capture,
-                                   const bool                       matrix) const
+                                   const bool                       matrix,
+                                   const Sinks                     &sinks) const
 {
   if (matrix)
     flow_operator.system = 0;
@@ -265,27 +284,28 @@ void FlowAssembler<dim>::assemble (const FlowAssemblyState<dim>    &state,
   const auto &fe = dynamic_cast<const FESystem<dim> &> (flow_dof_handler.get_fe ());
   const FlowCellScratch<dim> scratch (
       mapping, fe, alpha_dof_handler.get_fe (), QGauss<dim> (3), QGauss<dim - 1> (3));
-  const FlowCellCopy               copy (fe.n_dofs_per_cell ());
+  const CellCopy                   copy (fe.n_dofs_per_cell (), sinks.size ());
   const std::vector<unsigned int> &component = scratch.indices.component;
 
   using Filtered = FilteredIterator<CellIterator>;
   WorkStream::run (
       Filtered (IteratorFilters::LocallyOwnedCell (), flow_dof_handler.begin_active ()),
       Filtered (IteratorFilters::LocallyOwnedCell (), flow_dof_handler.end ()),
-      [&] (const Filtered &cell, FlowCellScratch<dim> &s, FlowCellCopy &c)
+      [&] (const Filtered &cell, FlowCellScratch<dim> &s, CellCopy &c)
       {
-        c.with_matrix = matrix;
+        c.system.with_matrix = matrix;
         if (!matrix)
         {
-          cell->get_dof_indices (c.dofs);
-          for (const auto dof : c.dofs)
-            c.with_matrix =
-                c.with_matrix || flow_constraints.is_inhomogeneously_constrained (dof);
+          cell->get_dof_indices (c.system.dofs);
+          for (const auto dof : c.system.dofs)
+            c.system.with_matrix = c.system.with_matrix ||
+                                   flow_constraints.is_inhomogeneously_constrained (dof);
         }
-        local_system (cell, state, s, c);
+        local_system (cell, state, sinks, s, c);
       },
-      [&] (const FlowCellCopy &c)
+      [&] (const CellCopy &copy_data)
       {
+        const FlowCellCopy &c = copy_data.system;
         if (c.captured)
           capture_boundary_rows (c, component, capture, matrix);
         if (matrix)
@@ -297,6 +317,9 @@ void FlowAssembler<dim>::assemble (const FlowAssemblyState<dim>    &state,
           flow_constraints.distribute_local_to_global (c.rhs, c.dofs, rhs);
         schur_constraints.distribute_local_to_global (
             c.schur, c.dofs, flow_operator.schur);
+        for (unsigned int i = 0; i < sinks.size (); ++i)
+          sinks[i]->distribute (
+              copy_data.cell, copy_data.coefficients, copy_data.sink_data[i]);
       },
       scratch,
       copy);

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <wetbed/assembly/flow/flow_coefficient_sink.h>
 #include <wetbed/assembly/flow/flow_term.h>
 #include <wetbed/solvers/assembled_flow_operator.h>
 
@@ -17,7 +18,10 @@ namespace wetbed
  * cell the fields and, once, every closure at the quadrature points (ClosureEvaluator)
  * go into the scratch, then each term adds its part to the local system, and the copier
  * distributes it into the assembled operator (the system and the Schur mobility
- * Laplacian) and the right-hand side.
+ * Laplacian) and the right-hand side. For the matrix-free operator the same pass also
+ * evaluates the bilinear form's coefficients at the quadrature points and hands them to
+ * the coefficient sinks (FlowCoefficientSink): the fields and closures of a cell are
+ * evaluated once per assembly.
  */
 template <int dim>
 class FlowAssembler
@@ -44,40 +48,28 @@ public:
     std::vector<BoundaryCellSystem>       *systems;
   };
 
+  using CellIterator = typename dealii::DoFHandler<dim>::active_cell_iterator;
+  using Sinks        = std::vector<FlowCoefficientSink<dim> *>;
+
   /** The system (with `matrix`; without it only the rhs and L_c: the matrix-free
    * operator applies the system, and the cells with inhomogeneous constraints build
    * their local matrix only to carry the constraints into the rhs; the capture then
-   * keeps only the rhs part of the boundary rows). */
+   * keeps only the rhs part of the boundary rows). With `sinks`, in the same pass, the
+   * coefficients of every cell and of its boundary faces (from the same fields and
+   * closures) go to each sink: its local work on the worker threads, its distribute()
+   * in the copier. */
   void assemble (const FlowAssemblyState<dim>            &state,
                  const dealii::AffineConstraints<double> &flow_constraints,
                  const dealii::AffineConstraints<double> &schur_constraints,
                  AssembledFlowOperator                   &flow_operator,
                  BlockVector                             &rhs,
                  const BoundaryRowCapture                &capture,
-                 bool                                     matrix = true) const;
+                 bool                                     matrix = true,
+                 const Sinks                             &sinks  = Sinks ()) const;
 
-  using CellIterator = typename dealii::DoFHandler<dim>::active_cell_iterator;
-
-  /** The coefficients of the boundary terms on one boundary face of a cell, with the
-   * points they belong to (empty where no term acts on the face). */
-  struct FaceCoefficients
-  {
-    std::vector<FlowFacePointCoefficients<dim>> values;
-    std::vector<dealii::Point<dim>>             points;
-  };
-
-  /** A scratch for cell_coefficients() (the quadrature of assemble()). */
-  FlowCellScratch<dim> make_scratch () const;
   /** The name of a term that contributes to the matrix but gives no coefficients (the
    * matrix-free operator cannot apply it), or an empty string. */
   std::string term_without_coefficients () const;
-  /** The bilinear form's coefficients at the quadrature points of a (flow DoF handler)
-   * cell and of its boundary faces, from the same fields and closures as assemble(). */
-  void cell_coefficients (const CellIterator                      &cell,
-                          const FlowAssemblyState<dim>            &state,
-                          FlowCellScratch<dim>                    &scratch,
-                          std::vector<FlowPointCoefficients<dim>> &values,
-                          std::vector<FaceCoefficients>           &faces) const;
 
 private:
   /** The fields, the closures and the shared point quantities of a cell. */
@@ -91,10 +83,32 @@ private:
                      unsigned int                  face,
                      const FlowAssemblyState<dim> &state,
                      FlowCellScratch<dim>         &scratch) const;
+  /** What the pass over the cells hands from a worker to the copier: the local system,
+   * and with sinks the cell's coefficients and each sink's local work. */
+  struct CellCopy
+  {
+    CellCopy (unsigned int n_dofs, unsigned int n_sinks);
+
+    CellIterator                                              cell;
+    FlowCellCopy                                              system;
+    CellCoefficients<dim>                                     coefficients;
+    std::vector<typename FlowCoefficientSink<dim>::LocalData> sink_data;
+  };
   void local_system (const CellIterator           &cell,
                      const FlowAssemblyState<dim> &state,
+                     const Sinks                  &sinks,
                      FlowCellScratch<dim>         &scratch,
-                     FlowCellCopy                 &copy) const;
+                     CellCopy                     &copy) const;
+  /** The volume coefficients of the prepared cell, into `values` ([q]). */
+  void point_coefficients (const FlowCellScratch<dim>              &scratch,
+                           const FlowAssemblyState<dim>            &state,
+                           std::vector<FlowPointCoefficients<dim>> &values) const;
+  /** The coefficients of the boundary terms on the prepared face f. */
+  void face_coefficients (const CellIterator           &cell,
+                          unsigned int                  f,
+                          const FlowCellScratch<dim>   &scratch,
+                          const FlowAssemblyState<dim> &state,
+                          FaceCoefficients<dim>        &face) const;
   /** The weighted boundary rows of a cell (with `rows`; else only their rhs part). */
   static void capture_boundary_rows (const FlowCellCopy              &copy,
                                      const std::vector<unsigned int> &component,
