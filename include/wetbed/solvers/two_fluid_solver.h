@@ -33,6 +33,7 @@
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping_q.h>
+#include <deal.II/fe/mapping_q_cache.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/trilinos_block_sparse_matrix.h>
@@ -194,7 +195,10 @@ private:
   WallConditions                         wall_conditions;
   // the partition's cost model (mesh/wall face weight); unconnected: balance by count
   boost::signals2::scoped_connection cell_weights;
-  dealii::MappingQ<dim>              mapping;
+  // MappingQ's support points of every cell, computed once per mesh (setup_dofs): the
+  // transfinite/cylindrical manifold of a curved column is not evaluated again at
+  // every FEValues::reinit
+  dealii::MappingQCache<dim> mapping;
 
   dealii::FESystem<dim>   flow_fe;
   dealii::DoFHandler<dim> flow_dof_handler;
