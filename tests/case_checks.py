@@ -472,8 +472,34 @@ elif check == "signals":
         same_monitors(reference, rows, f"stopped by {name.upper()} at step {stopped_at}, resumed on 2 ranks", 1e-5)
     folder, code, out = interrupted("sigusr1", signal.SIGUSR1)
     expect(code == 0 and out.count("checkpoint written") == 1 and os.path.isfile(os.path.join(folder, "checkpoint", "state")),
-           f"SIGUSR1 to mpirun: one checkpoint, the run goes on to the end (exit {code})")
+           f"SIGUSR1 to mpirun: one checkpoint ({out.count('checkpoint written')} written), "
+           f"the run goes on to the end (exit {code})")
     same_monitors(reference, read_monitors(folder), "SIGUSR1 run vs uninterrupted", 1e-12)
+    # mpirun forwards its signal to every rank, and the ranks may see it in different
+    # steps: one rank at step 13, the other at step 17 is still one request
+    folder = os.path.join(work, "signals_staggered")
+    shutil.rmtree(folder, ignore_errors=True)
+    prm = os.path.join(work, "signals_staggered.prm")
+    text = open(os.path.join(work, "signals_reference.prm")).read()
+    open(prm, "w").write(text.replace(os.path.join(work, "signals_reference"), folder))
+    process = subprocess.Popen(["mpirun", "--oversubscribe", "-np", "2", wetbed, prm],
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=mpi_env)
+    monitors = os.path.join(folder, "monitors.csv")
+
+    def wait_for_rows(n):
+        while process.poll() is None and (not os.path.isfile(monitors) or len(open(monitors).readlines()) < n):
+            clock.sleep(0.02)
+
+    wait_for_rows(13)
+    ranks = subprocess.run(["pgrep", "-P", str(process.pid)], capture_output=True, text=True).stdout.split()
+    if len(ranks) == 2:
+        os.kill(int(ranks[0]), signal.SIGUSR1)
+        wait_for_rows(17)
+        os.kill(int(ranks[1]), signal.SIGUSR1)
+    out, err = process.communicate()
+    expect(len(ranks) == 2 and process.returncode == 0 and out.count("checkpoint written") == 1,
+           f"SIGUSR1 to one rank at step 13 and to the other at step 17: one checkpoint "
+           f"({out.count('checkpoint written')} written, exit {process.returncode}, {len(ranks)} ranks found)")
     # the wall clock: a checkpoint after each step that passes a multiple of 0.3 s
     rows = run("kinetic_theory_bed", overrides.replace("wall time interval = 0", "wall time interval = 0.3"), 1,
                os.path.join(work, "signals_clock"))

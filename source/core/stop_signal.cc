@@ -2,15 +2,20 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <algorithm>
 #include <csignal>
 
 namespace wetbed
 {
 namespace
 {
-volatile std::sig_atomic_t stop_signal_received       = 0;
-volatile std::sig_atomic_t checkpoint_signal_received = 0;
-bool                       signals_caught             = false;
+volatile std::sig_atomic_t stop_signal_received = 0;
+// SIGUSR1 is counted, not flagged: mpirun forwards one signal to every rank, and the
+// ranks may see it in different steps; the largest count over the ranks is the number
+// of requests, so a rank that sees the signal a step later does not ask again
+volatile std::sig_atomic_t checkpoint_signals_received = 0;
+unsigned int               checkpoint_signals_answered = 0;
+bool                       signals_caught              = false;
 
 extern "C" void record_stop_signal (int)
 {
@@ -19,7 +24,7 @@ extern "C" void record_stop_signal (int)
 
 extern "C" void record_checkpoint_signal (int)
 {
-  checkpoint_signal_received = 1;
+  checkpoint_signals_received = checkpoint_signals_received + 1;
 }
 } // namespace
 
@@ -34,14 +39,17 @@ void catch_stop_signals ()
 
 SignalRequest signal_request (MPI_Comm communicator)
 {
-  const unsigned int local   = stop_signal_received != 0         ? 2
-                               : checkpoint_signal_received != 0 ? 1
-                                                                 : 0;
-  checkpoint_signal_received = 0;
-  const unsigned int any     = dealii::Utilities::MPI::max (local, communicator);
-  return any == 2   ? SignalRequest::stop
-         : any == 1 ? SignalRequest::checkpoint
-                    : SignalRequest::none;
+  const unsigned int local[2] = {stop_signal_received != 0 ? 1u : 0u,
+                                 static_cast<unsigned int> (checkpoint_signals_received)};
+  unsigned int any[2];
+  dealii::Utilities::MPI::max (dealii::ArrayView<const unsigned int> (local, 2),
+                               communicator,
+                               dealii::ArrayView<unsigned int> (any, 2));
+  const bool checkpoint       = any[1] > checkpoint_signals_answered;
+  checkpoint_signals_answered = std::max (checkpoint_signals_answered, any[1]);
+  return any[0] != 0  ? SignalRequest::stop
+         : checkpoint ? SignalRequest::checkpoint
+                      : SignalRequest::none;
 }
 
 bool stop_requested (MPI_Comm communicator)

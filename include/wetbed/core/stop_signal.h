@@ -18,8 +18,11 @@ enum class SignalRequest
   stop        // SIGTERM, SIGINT, SIGUSR2: write a checkpoint and stop
 };
 
-/** The strongest request any rank received (collective: every rank must call it);
- * a checkpoint request is answered by this call (cleared). */
+/** The strongest request any rank received (collective: every rank must call it).
+ * A checkpoint request is answered by this call: SIGUSR1 signals are counted on each
+ * rank, and a checkpoint is asked for when the largest count over the ranks exceeds
+ * the number already answered (one signal that mpirun forwards to every rank, seen by
+ * the ranks in different steps, is one request). */
 SignalRequest signal_request (MPI_Comm communicator);
 
 /** Whether any rank received a stop signal (collective; false on every rank without a
