@@ -6,7 +6,10 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/lac/trilinos_index_access.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
+
+#include <Epetra_CrsMatrix.h>
 
 #include <algorithm>
 #include <cmath>
@@ -129,21 +132,24 @@ void VolumeFractionTransport<dim>::set_velocity (const VelocityAtQuadrature &vel
     }
   convection.compress (VectorOperation::add);
   convection_transpose.compress (VectorOperation::add);
-  const auto  &owned     = dof_handler->locally_owned_dofs ();
-  unsigned int local_row = 0;
-  for (const auto global_row : owned)
+  // the rows in Epetra's storage order, the order setup() recorded the columns in (both
+  // matrices share one sparsity pattern); Epetra's local rows are the owned DoFs in order
+  const Epetra_CrsMatrix &k  = convection.trilinos_matrix ();
+  const Epetra_CrsMatrix &kt = convection_transpose.trilinos_matrix ();
+  for (unsigned int i = 0; i < rows.size (); ++i)
   {
-    Row &row = rows[local_row++];
+    Row &row = rows[i];
     if (row.columns.empty ())
       continue;
-    auto         it_t = convection_transpose.begin (global_row);
-    unsigned int e    = 0;
-    for (auto it = convection.begin (global_row); it != convection.end (global_row);
-         ++it, ++it_t, ++e)
-    {
-      row.k[e]  = it->value ();
-      row.kt[e] = it_t->value ();
-    }
+    int     n = 0, n_t = 0;
+    double *values = nullptr, *values_t = nullptr;
+    int    *columns = nullptr, *columns_t = nullptr;
+    k.ExtractMyRowView (i, n, values, columns);
+    kt.ExtractMyRowView (i, n_t, values_t, columns_t);
+    AssertThrow (static_cast<std::size_t> (n) == row.columns.size () && n_t == n,
+                 dealii::ExcInternalError ());
+    std::copy (values, values + n, row.k.begin ());
+    std::copy (values_t, values_t + n, row.kt.begin ());
   }
 }
 
@@ -373,21 +379,28 @@ double VolumeFractionTransport<dim>::apply_diffusive_fluxes (
   const auto                      &partitioner = *alpha.get_partitioner ();
   const unsigned int               n_owned     = rows.size ();
   std::vector<std::vector<double>> flux (n_owned);
+  const Epetra_CrsMatrix          &a = A.trilinos_matrix ();
   for (unsigned int i = 0; i < n_owned; ++i)
   {
     const Row &row = rows[i];
     flux[i].assign (row.columns.size (), 0.0);
     if (constrained[i])
       continue;
-    const auto global_row = partitioner.local_to_global (i);
-    for (auto it = A.begin (global_row); it != A.end (global_row); ++it)
+    // Epetra's local row i is the i-th owned DoF; its columns are local to A's column map
+    int     n       = 0;
+    double *values  = nullptr;
+    int    *columns = nullptr;
+    a.ExtractMyRowView (i, n, values, columns);
+    for (int e = 0; e < n; ++e)
     {
-      const unsigned int j = partitioner.global_to_local (it->column ());
+      const unsigned int j = partitioner.global_to_local (
+          dealii::TrilinosWrappers::global_index (a.ColMap (), columns[e]));
       if (j == i)
         continue;
       const auto position = std::find (row.columns.begin (), row.columns.end (), j);
+      Assert (position != row.columns.end (), dealii::ExcInternalError ());
       flux[i][position - row.columns.begin ()] =
-          -it->value () * (x.local_element (j) - x.local_element (i));
+          -values[e] * (x.local_element (j) - x.local_element (i));
     }
   }
   const double held_back = limit_to_bounds (alpha, flux, alpha_max);

@@ -121,6 +121,10 @@ private:
                                 const BlockVector                &flow_solution,
                                 AlphaVector                      &alpha,
                                 SolveHistory                     &history);
+  /** z of the correction by CG: point Jacobi, AMG where Jacobi is slow. */
+  void solve_correction (const dealii::TrilinosWrappers::MPI::Vector &rhs,
+                         dealii::TrilinosWrappers::MPI::Vector       &increment,
+                         SolveHistory                                &history) const;
   /** u_s += -P_s'(alpha) / (a0 alpha_s rho_s / dt + beta) grad (alpha - alpha_m). */
   void correct_solids_velocity (const SolidsTransportInputs<dim> &inputs,
                                 const AlphaVector                &alpha,
