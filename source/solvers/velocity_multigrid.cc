@@ -134,31 +134,6 @@ void VelocityMultigrid<dim>::begin_update ()
 
 namespace
 {
-/** The cell bilinear form within phase k between the test function phi_a e_d and the
- * trial function phi_b e_e, [d][e] (the drag to the other phase is -drag phi_a phi_b on
- * its diagonal). */
-template <int dim>
-Tensor<2, dim> phase_block (const FlowPointCoefficients<dim> &c,
-                            const unsigned int                k,
-                            const double                      phi_a,
-                            const double                      phi_b,
-                            const Tensor<1, dim>             &ga,
-                            const Tensor<1, dim>             &gb)
-{
-  const double advective_a = c.advection[k] * ga, advective_b = c.advection[k] * gb;
-  const double same = (c.mass[k] + c.drag) * phi_a * phi_b +
-                      c.inertia[k] * phi_a * advective_b +
-                      c.supg[k] * advective_a * advective_b + c.viscosity[k] * (ga * gb);
-  Tensor<2, dim> block;
-  for (unsigned int d = 0; d < dim; ++d)
-  {
-    for (unsigned int e = 0; e < dim; ++e)
-      block[d][e] = c.viscosity[k] * gb[d] * ga[e] + c.bulk[k] * gb[e] * ga[d];
-    block[d][d] += same;
-  }
-  return block;
-}
-
 /** The boundary bilinear form of phase k between phi_a e_d and phi_b e_e, [d][e], with
  * the mapped normal n_h: friction, backflow (gas) and the Nitsche terms of a slipping
  * phase. */
@@ -228,43 +203,68 @@ void VelocityMultigrid<dim>::local_cell (
           fine_system[fine_fe.component_to_system_index (c, a)];
   }
 
-  FullMatrix<double> &coarse = local.matrices[0];
-  Vector<double>     &blocks = local.vectors[0];
+  // the cell bilinear form within phase k between phi_a e_d (test) and phi_b e_e
+  // (trial): [(mass_k + drag) phi_a phi_b + inertia_k phi_a (a_k.grad phi_b)
+  // + supg_k (a_k.grad phi_a)(a_k.grad phi_b) + mu_k grad phi_a.grad phi_b] delta_de
+  // + mu_k d_d phi_b d_e phi_a + lambda_k d_e phi_b d_d phi_a, and -drag phi_a phi_b to
+  // the other phase's component d; the weight folded into the coefficients, the
+  // advective derivatives computed once per point and phase
+  FullMatrix<double>    &coarse = local.matrices[0];
+  Vector<double>        &blocks = local.vectors[0];
+  std::array<double, 27> advective_p, advective_v;
+  AssertIndexRange (n2, 28);
   for (unsigned int q = 0; q < s.JxW.size (); ++q)
   {
-    const FlowPointCoefficients<dim> &c = values[q];
-    const double                      w = s.JxW[q];
+    const FlowPointCoefficients<dim> &c    = values[q];
+    const double                      w    = s.JxW[q];
+    const double                      drag = c.drag * w;
     for (unsigned int k = 0; k < 2; ++k)
     {
       const unsigned int o = k * dim, other = (1 - k) * dim;
+      const double       mass = (c.mass[k] + c.drag) * w, inertia = c.inertia[k] * w,
+                   supg = c.supg[k] * w, viscosity = c.viscosity[k] * w,
+                   bulk = c.bulk[k] * w;
       for (unsigned int a = 0; a < n1; ++a)
+        advective_p[a] = c.advection[k] * s.grad_phi_p[q][a];
+      for (unsigned int a = 0; a < n1; ++a)
+      {
+        const double          phi_a = s.phi_p[q][a], adv_a = advective_p[a];
+        const Tensor<1, dim> &ga = s.grad_phi_p[q][a];
         for (unsigned int b = 0; b < n1; ++b)
         {
-          const double         phi_a = s.phi_p[q][a], phi_b = s.phi_p[q][b];
-          const Tensor<2, dim> block =
-              phase_block (c, k, phi_a, phi_b, s.grad_phi_p[q][a], s.grad_phi_p[q][b]);
+          const double          phi_b = s.phi_p[q][b], adv_b = advective_p[b];
+          const Tensor<1, dim> &gb   = s.grad_phi_p[q][b];
+          const double          same = mass * phi_a * phi_b + inertia * phi_a * adv_b +
+                              supg * adv_a * adv_b + viscosity * (ga * gb);
           for (unsigned int d = 0; d < dim; ++d)
           {
+            const unsigned int row = (o + d) * n1 + a;
             for (unsigned int e = 0; e < dim; ++e)
-              coarse ((o + d) * n1 + a, (o + e) * n1 + b) += block[d][e] * w;
-            coarse ((o + d) * n1 + a, (other + d) * n1 + b) -= c.drag * phi_a * phi_b * w;
+              coarse (row, (o + e) * n1 + b) +=
+                  viscosity * gb[d] * ga[e] + bulk * gb[e] * ga[d];
+            coarse (row, (o + d) * n1 + b) += same;
+            coarse (row, (other + d) * n1 + b) -= drag * phi_a * phi_b;
           }
         }
+      }
       // the node blocks: entry ((o + d, a), ((o + d + offset) mod 2 dim, a)) at
       // offset * 2 dim n2 + (o + d) n2 + a
       for (unsigned int a = 0; a < n2; ++a)
+        advective_v[a] = c.advection[k] * s.grad_phi[q][a];
+      for (unsigned int a = 0; a < n2; ++a)
       {
-        const double         phi = s.phi[q][a];
-        const Tensor<2, dim> block =
-            phase_block (c, k, phi, phi, s.grad_phi[q][a], s.grad_phi[q][a]);
+        const double          phi = s.phi[q][a], adv = advective_v[a];
+        const Tensor<1, dim> &g = s.grad_phi[q][a];
+        const double same = mass * phi * phi + inertia * phi * adv + supg * adv * adv +
+                            viscosity * (g * g);
         for (unsigned int d = 0; d < dim; ++d)
         {
           const unsigned int row = (o + d) * n2 + a;
           for (unsigned int e = 0; e < dim; ++e)
             blocks[((e + 2 * dim - d) % (2 * dim)) * 2 * dim * n2 + row] +=
-                block[d][e] * w;
+                (viscosity + bulk) * g[d] * g[e] + (d == e ? same : 0.0);
           blocks[((other + 2 * dim - o) % (2 * dim)) * 2 * dim * n2 + row] -=
-              c.drag * phi * phi * w;
+              drag * phi * phi;
         }
       }
     }

@@ -35,6 +35,16 @@ std::vector<std::string> FlowAssembler<dim>::term_names () const
   return names;
 }
 
+namespace
+{
+/** A cell's DoF values as the FEValuesViews *_from_local_dof_values functions take them
+ * (deal.II instantiates those for ArrayView). */
+dealii::ArrayView<double> local (dealii::Vector<double> &values)
+{
+  return dealii::make_array_view (values.begin (), values.end ());
+}
+} // namespace
+
 template <int dim>
 void FlowAssembler<dim>::prepare_cell (const CellIterator           &cell,
                                        const FlowAssemblyState<dim> &state,
@@ -51,12 +61,17 @@ void FlowAssembler<dim>::prepare_cell (const CellIterator           &cell,
   s.alpha_values.get_function_values (*state.alpha_old, s.alpha_s_old);
   s.alpha_values.get_function_values (*state.alpha_old2, s.alpha_s_old2);
   s.alpha_values.get_function_values (*state.theta, s.theta);
+  cell->get_dof_values (*state.flow, s.flow_local);
+  cell->get_dof_values (*state.flow_old, s.flow_old_local);
+  cell->get_dof_values (*state.flow_old2, s.flow_old2_local);
   for (unsigned int k = 0; k < 2; ++k)
   {
-    s.fe_values[velocity[k]].get_function_values (*state.flow, s.u[k]);
-    s.fe_values[velocity[k]].get_function_gradients (*state.flow, s.grad_u[k]);
-    s.fe_values[velocity[k]].get_function_values (*state.flow_old, s.u_old[k]);
-    s.fe_values[velocity[k]].get_function_values (*state.flow_old2, s.u_old2[k]);
+    const auto &view = s.fe_values[velocity[k]];
+    view.get_function_values_from_local_dof_values (local (s.flow_local), s.u[k]);
+    view.get_function_gradients_from_local_dof_values (local (s.flow_local), s.grad_u[k]);
+    view.get_function_values_from_local_dof_values (local (s.flow_old_local), s.u_old[k]);
+    view.get_function_values_from_local_dof_values (local (s.flow_old2_local),
+                                                    s.u_old2[k]);
   }
   const unsigned int n_q = s.JxW.size ();
   for (unsigned int q = 0; q < n_q; ++q)
@@ -120,9 +135,12 @@ void FlowAssembler<dim>::prepare_face (const CellIterator           &cell,
   s.face_values.reinit (cell, face);
   s.alpha_face_values.reinit (alpha_cell, face);
   const FEValuesExtractors::Vector gas (0), solids (dim);
-  s.face_values[gas].get_function_values (*state.flow, s.face_u[0]);
-  s.face_values[solids].get_function_values (*state.flow, s.face_u[1]);
-  s.face_values[solids].get_function_gradients (*state.flow, s.face_grad_u_s);
+  // the cell's flow values, read in prepare_cell
+  const auto flow = local (s.flow_local);
+  s.face_values[gas].get_function_values_from_local_dof_values (flow, s.face_u[0]);
+  s.face_values[solids].get_function_values_from_local_dof_values (flow, s.face_u[1]);
+  s.face_values[solids].get_function_gradients_from_local_dof_values (flow,
+                                                                      s.face_grad_u_s);
   s.alpha_face_values.get_function_values (*state.alpha, s.face_alpha_s);
   s.alpha_face_values.get_function_values (*state.theta, s.face_theta);
 }

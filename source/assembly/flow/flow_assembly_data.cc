@@ -64,6 +64,8 @@ FlowCellScratch<dim>::FlowCellScratch (const dealii::Mapping<dim>        &mappin
     face_u[k].resize (n_fq);
   }
   alpha_nodal.reinit (alpha_fe.n_dofs_per_cell ());
+  for (auto *v : {&flow_local, &flow_old_local, &flow_old2_local})
+    v->reinit (flow_fe.n_dofs_per_cell ());
   closures.resize (n_q, alpha_fe.n_dofs_per_cell ());
   face_alpha_s.resize (n_fq);
   face_theta.resize (n_fq);

@@ -88,7 +88,10 @@ struct FlowCellScratch
   std::array<std::vector<dealii::Tensor<1, dim>>, 2> u, u_old, u_old2;
   std::array<std::vector<dealii::Tensor<2, dim>>, 2> grad_u;
   dealii::Vector<double>                             alpha_nodal;
-  closures::CellClosures                             closures;
+  // the cell's flow DoF values of the current, previous and second previous solution,
+  // read once per cell (the Trilinos vectors' element access is slow)
+  dealii::Vector<double> flow_local, flow_old_local, flow_old2_local;
+  closures::CellClosures closures;
 
   // point quantities several terms read
   std::vector<double> compaction_pressure; // Q1 interpolant of P_s(alpha_j)
