@@ -420,7 +420,7 @@ void VelocityMultigrid<dim>::rebuild ()
   coarse_amg.initialize (coarse_matrix, data);
 
   typename Smoother::AdditionalData smoothing;
-  smoothing.degree              = parameters.smoother_sweeps;
+  smoothing.degree              = parameters.multigrid_degree;
   smoothing.smoothing_range     = 20;
   smoothing.eig_cg_n_iterations = 12;
   smoothing.preconditioner      = jacobi;

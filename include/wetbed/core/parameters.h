@@ -100,7 +100,8 @@ struct LinearSolverParameters
   std::string  smoother;
   std::string  inner_solves; // V-cycle (default), exact or exact velocity (diagnosis)
   unsigned int smoother_sweeps;
-  bool         rotation_modes; // rigid rotations in the velocity AMG's near-null space
+  unsigned int multigrid_degree; // Chebyshev degree of the velocity p-multigrid
+  bool         rotation_modes;   // rigid rotations in the velocity AMG's near-null space
   double       aggregation_threshold;
   double       rebuild_growth; // rebuild the AMG when iterations grow by this factor
   unsigned int rebuild_interval;
