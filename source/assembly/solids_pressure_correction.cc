@@ -99,6 +99,42 @@ SolidsTransport<dim>::compaction_mobility (const closures::ClosureEvaluator &clo
  * iterations); where Jacobi has not converged within 50 iterations, the solve restarts
  * from zero with AMG, which is robust in the stiffness.
  */
+namespace
+{
+/** CG on `matrix` with `preconditioner` within `steps` iterations, recorded in
+ * `history` as `name`; true when it converged. A stop signal (StepInterrupted) passes
+ * through; a missed tolerance is rethrown where `rethrow`. */
+template <typename Preconditioner>
+bool cg_solve (MPI_Comm                              communicator,
+               const TrilinosWrappers::SparseMatrix &matrix,
+               const Preconditioner                 &preconditioner,
+               const TrilinosWrappers::MPI::Vector  &rhs,
+               TrilinosWrappers::MPI::Vector        &solution,
+               const std::pair<unsigned int, double> steps_and_tolerance,
+               const std::string                    &name,
+               const bool                            rethrow,
+               SolveHistory                         &history)
+{
+  InterruptibleSolverControl control (
+      communicator, steps_and_tolerance.first, steps_and_tolerance.second);
+  control.enable_history_data ();
+  SolverCG<TrilinosWrappers::MPI::Vector> cg (control);
+  try
+  {
+    cg.solve (matrix, solution, rhs, preconditioner);
+  }
+  catch (const SolverControl::NoConvergence &)
+  {
+    history.record (name, control, false);
+    if (rethrow)
+      throw;
+    return false;
+  }
+  history.record (name, control, true);
+  return true;
+}
+} // namespace
+
 template <int dim>
 void SolidsTransport<dim>::solve_correction (const TrilinosWrappers::MPI::Vector &rhs,
                                              TrilinosWrappers::MPI::Vector &increment,
@@ -106,38 +142,30 @@ void SolidsTransport<dim>::solve_correction (const TrilinosWrappers::MPI::Vector
 {
   const double tolerance =
       parameters.linear_solver.scalar_tolerance * rhs.l2_norm () + 1e-300;
-  {
-    InterruptibleSolverControl control (communicator, 50, tolerance);
-    control.enable_history_data ();
-    SolverCG<TrilinosWrappers::MPI::Vector> cg (control);
-    TrilinosWrappers::PreconditionJacobi    jacobi;
-    jacobi.initialize (correction_matrix);
-    try
-    {
-      cg.solve (correction_matrix, increment, rhs, jacobi);
-      history.record ("solids-pressure correction CG (Jacobi)", control, true);
-      return;
-    }
-    catch (const SolverControl::NoConvergence &)
-    {
-      increment = 0;
-    }
-  }
-  InterruptibleSolverControl control (communicator, 1000, tolerance);
-  control.enable_history_data ();
-  SolverCG<TrilinosWrappers::MPI::Vector> cg (control);
-  TrilinosWrappers::PreconditionAMG       amg;
+  TrilinosWrappers::PreconditionJacobi jacobi;
+  jacobi.initialize (correction_matrix);
+  if (cg_solve (communicator,
+                correction_matrix,
+                jacobi,
+                rhs,
+                increment,
+                {50, tolerance},
+                "solids-pressure correction CG (Jacobi; AMG on a miss)",
+                false,
+                history))
+    return;
+  increment = 0;
+  TrilinosWrappers::PreconditionAMG amg;
   amg.initialize (correction_matrix);
-  try
-  {
-    cg.solve (correction_matrix, increment, rhs, amg);
-  }
-  catch (const SolverControl::NoConvergence &)
-  {
-    history.record ("solids-pressure correction CG (AMG)", control, false);
-    throw;
-  }
-  history.record ("solids-pressure correction CG (AMG)", control, true);
+  cg_solve (communicator,
+            correction_matrix,
+            amg,
+            rhs,
+            increment,
+            {1000, tolerance},
+            "solids-pressure correction CG (AMG)",
+            true,
+            history);
 }
 
 template <int dim>
