@@ -212,7 +212,8 @@ void VelocityMultigrid<dim>::local_cell (
   FullMatrix<double>    &coarse = local.matrices[0];
   Vector<double>        &blocks = local.vectors[0];
   std::array<double, 27> advective_p, advective_v;
-  AssertIndexRange (n2, 28);
+  AssertThrow (n1 <= advective_p.size () && n2 <= advective_v.size (),
+               ExcInternalError ());
   for (unsigned int q = 0; q < s.JxW.size (); ++q)
   {
     const FlowPointCoefficients<dim> &c    = values[q];
