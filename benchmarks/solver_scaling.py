@@ -12,7 +12,13 @@ refinements) and at a fixed Courant number (dt = 4e-4, 2e-4, 1e-4 s on levels 0,
 over two refinements (target: at most 30%) and writes the 'solver_scaling' section of
 doc/benchmarks.md and doc/solver_scaling.png.
 
-usage: python3 benchmarks/solver_scaling.py [--end-time 0.01]
+With `--path p-multigrid` the same runs use the matrix-free operator and the velocity
+p-multigrid (`linear solver/operator = matrix-free`, `velocity preconditioner =
+p-multigrid`) and write the 'solver_scaling_p_multigrid' section (and
+doc/solver_scaling_p_multigrid.png); `--ladders` picks ladders by name.
+
+usage: python3 benchmarks/solver_scaling.py [--end-time 0.01] [--path assembled|p-multigrid]
+       [--ladders h "h, fixed Courant number" ...]
 (build first: bash scripts/build.sh)
 """
 import argparse
@@ -23,8 +29,14 @@ from benchmark_setup import read_case, replace_doc_section, repository_root, sol
 root = repository_root()
 parser = argparse.ArgumentParser()
 parser.add_argument("--end-time", type=float, default=0.01)
+parser.add_argument("--path", choices=["assembled", "p-multigrid"], default="assembled")
+parser.add_argument("--ladders", nargs="+", default=None)
 args = parser.parse_args()
-work = os.path.join(root, "build", "benchmarks", "solver_scaling")
+suffix = "" if args.path == "assembled" else "_p_multigrid"
+path_sections = ("" if args.path == "assembled" else
+                 "subsection linear solver\n set operator = matrix-free\n"
+                 " set velocity preconditioner = p-multigrid\nend\n")
+work = os.path.join(root, "build", "benchmarks", "solver_scaling" + suffix)
 os.makedirs(work, exist_ok=True)
 base = read_case("bubbling_bed_2d")
 wet = read_case("wet_column_2d")
@@ -54,8 +66,20 @@ ladders = {
     "drag": [(f"d = {d * 1e6:g} µm", f"d_{d * 1e6:g}", mesh(1) + f"subsection physical properties\n"
               f" set particle diameter = {d:g}\nend\n") for d in (700e-6, 350e-6, 175e-6)],
 }
-lines = [f"Command: `python3 benchmarks/solver_scaling.py --end-time {args.end_time:g}` (prm/bubbling_bed_2d.prm, "
-         f"first {args.end_time:g} s of the start-up, serial, default solver settings; the Δt and drag ladders at "
+if args.ladders:
+    unknown = [name for name in args.ladders if name not in ladders]
+    if unknown:
+        raise SystemExit(f"solver_scaling.py: unknown ladder(s) {unknown}; known: {list(ladders)}")
+    ladders = {name: runs for name, runs in ladders.items() if name in args.ladders}
+command = f"python3 benchmarks/solver_scaling.py --end-time {args.end_time:g}"
+if args.path != "assembled":
+    command += f" --path {args.path}"
+if args.ladders:
+    command += " --ladders " + " ".join(f'"{name}"' for name in args.ladders)
+settings = ("default solver settings" if args.path == "assembled" else
+            "matrix-free operator with the velocity p-multigrid, otherwise default solver settings")
+lines = [f"Command: `{command}` (prm/bubbling_bed_2d.prm, "
+         f"first {args.end_time:g} s of the start-up, serial, {settings}; the Δt and drag ladders at "
          "level 1 (600 cells), the drag varied through the particle diameter, Stokes drag ∝ 1/d²; the wet ladders "
          "on prm/wet_column_2d.prm; 'same Δt': the adaptive start-up steps, identical on every mesh; 'fixed Courant "
          "number': Δt halved with h).", "",
@@ -67,7 +91,7 @@ for ladder, runs in ladders.items():
     its = []
     curves[ladder] = []
     for label, name, sections in runs:
-        r = solver_run(root, work, name, wet if "wet" in ladder else base, args.end_time, sections)
+        r = solver_run(root, work, name, wet if "wet" in ladder else base, args.end_time, sections + path_sections)
         its.append(r["its"])
         curves[ladder].append((r["cells"], r["its"]))
         row = (f"| {ladder} | {label} | {r['cells']} | {r['steps']} | {r['its']:.1f} | {r['setups']} | "
@@ -82,14 +106,13 @@ def over(ladder):
     return f"{first:.1f} → {last:.1f}, {percent:+.0f}%"
 
 
-lines += ["", "Growth of FGMRES iterations per solve over two refinements (level 0 → 2, target ≤ 30%): "
-          f"dry bed at a fixed Courant number (Δt ∝ h) {over('h, fixed Courant number')}; "
-          f"dry bed with the same Δt on every mesh (Courant number × 4) {over('h')}; "
-          f"wet column at a fixed Courant number {over('h, wet, fixed Courant number')}, with the same Δt "
-          f"{over('h, wet, same Δt')}. Over the Δt ladder at level 1 (1e-4 → 1e-3 s): {growth['Δt'][2]:+.0f}%; "
-          f"over the drag ladder (d = 700 → 175 µm, β × 16): {growth['drag'][2]:+.0f}%."]
+summary = [f"{ladder} {over(ladder)}" for ladder in ladders if ladder.startswith("h")]
+others = [f"the {ladder} ladder {growth[ladder][2]:+.0f}%" for ladder in ladders if not ladder.startswith("h")]
+lines += ["", "Growth of FGMRES iterations per solve over two refinements (level 0 → 2, target ≤ 30%; "
+          "'fixed Courant number': Δt ∝ h, 'same Δt': Courant number × 4): " + "; ".join(summary)
+          + ("; " + ", ".join(others) if others else "") + "."]
 print(lines[-1])
-lines += ["", "![iterations against cells](solver_scaling.png)"]
+lines += ["", f"![iterations against cells](solver_scaling{suffix}.png)"]
 
 import matplotlib  # noqa: E402
 matplotlib.use("Agg")
@@ -106,5 +129,7 @@ ax.set_ylim(bottom=0)
 ax.legend(fontsize=8)
 ax.set_title("Coupled solve: iterations against refinement")
 fig.tight_layout()
-fig.savefig(os.path.join(root, "doc", "solver_scaling.png"), dpi=110)
-replace_doc_section(root, "solver_scaling", "Solver scaling: iterations against h, Δt and drag (2D bed, start-up)", lines)
+fig.savefig(os.path.join(root, "doc", f"solver_scaling{suffix}.png"), dpi=110)
+replace_doc_section(root, "solver_scaling" + suffix,
+                    "Solver scaling: iterations against h, Δt and drag (2D bed, start-up)"
+                    + ("" if args.path == "assembled" else ", matrix-free operator with the velocity p-multigrid"), lines)

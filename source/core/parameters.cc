@@ -275,7 +275,7 @@ void LinearSolverParameters::declare_parameters (ParameterHandler &prm)
                      "(benchmarks/solver_diagnosis.py, doc/benchmarks.md).");
   prm.declare_entry ("inner solves",
                      "V-cycle",
-                     Selection ("V-cycle|exact|exact velocity"),
+                     Selection ("V-cycle|exact|exact velocity|exact coarse"),
                      "V-cycle: one AMG V-cycle per block (the product). exact: the "
                      "velocity block by a sparse direct solver (Amesos KLU) and the "
                      "pressure Schur approximation by CG to 1e-10, to tell how many "
@@ -284,7 +284,12 @@ void LinearSolverParameters::declare_parameters (ParameterHandler &prm)
                      "velocity: the direct velocity solve with the Schur V-cycle, to "
                      "tell the velocity V-cycle's iterations from the Schur "
                      "approximation's (with `rebuild interval = 1`, else the "
-                     "factorisation is reused like the AMG).");
+                     "factorisation is reused like the AMG). With `velocity "
+                     "preconditioner = p-multigrid` the velocity block is solved by "
+                     "GMRES with the V-cycle to 1e-10 instead of a direct solver (its "
+                     "iterations printed with `verbose`), and `exact coarse` solves "
+                     "the V-cycle's Q1 problem by GMRES with ML to 1e-10, to tell the "
+                     "coarse ML's part.");
   prm.declare_entry (
       "aggregation threshold", "1e-4", Double (0, 1), "ML aggregation threshold.");
   prm.declare_entry ("rebuild growth",
@@ -363,6 +368,9 @@ void LinearSolverParameters::parse_parameters (ParameterHandler &prm)
   require (!p_multigrid || matrix_free,
            "linear solver/velocity preconditioner",
            "p-multigrid needs 'linear solver/operator = matrix-free'");
+  require (inner_solves != "exact coarse" || p_multigrid,
+           "linear solver/inner solves",
+           "'exact coarse' needs 'linear solver/velocity preconditioner = p-multigrid'");
   require (relative_tolerance > 0 && relative_tolerance < 1,
            "linear solver/relative tolerance",
            "must lie in (0, 1)");

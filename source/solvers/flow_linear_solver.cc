@@ -3,6 +3,8 @@
 
 #include <deal.II/lac/solver_gmres.h>
 
+#include <cmath>
+
 namespace wetbed
 {
 using namespace dealii;
@@ -79,8 +81,26 @@ unsigned int FlowLinearSolver::solve (const FlowOperator &op,
     const unsigned int iterations = control.last_step ();
     history.record (reused ? "flow FGMRES (reused AMG)" : "flow FGMRES", control, true);
     if (ls.verbose)
-      pcout << "    FGMRES " << iterations << " iterations"
-            << (reused ? " (reused AMG)" : "") << std::endl;
+    {
+      {
+        const auto  &residuals = control.get_history_data ();
+        const double first     = residuals.empty () ? 0.0 : residuals.front ();
+        pcout << "    FGMRES " << iterations << " iterations"
+              << (reused ? " (reused AMG)" : "") << ", residual " << first << " -> "
+              << control.last_value () << " (target " << target << ", mean reduction "
+              << (first > 0 && iterations > 0
+                      ? std::pow (control.last_value () / first, 1.0 / iterations)
+                      : 0.0)
+              << ")" << std::endl;
+        BlockVector true_residual (rhs);
+        op.vmult (true_residual, solution);
+        true_residual.sadd (-1.0, 1.0, rhs);
+        pcout << "      true residual " << true_residual.l2_norm () << std::endl;
+      }
+      const std::string inner = preconditioner.report ();
+      if (!inner.empty ())
+        pcout << "      " << inner << std::endl;
+    }
     ++solves_since_build;
     if (iterations_after_build == 0)
       iterations_after_build = std::max (1u, iterations);

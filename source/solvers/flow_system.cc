@@ -88,9 +88,9 @@ void FlowSystem<dim>::reinit (const Mapping<dim>              &mapping,
     {
       const unsigned int builds = multigrid.builds;
       multigrid.reinit (matrix_free_op);
-      multigrid.builds = builds;
-      multigrid_preconditioner =
-          std::make_unique<MatrixFreeBlockPreconditioner<dim>> (op, multigrid);
+      multigrid.builds         = builds;
+      multigrid_preconditioner = std::make_unique<MatrixFreeBlockPreconditioner<dim>> (
+          parameters.linear_solver, op, multigrid);
     }
   }
   rhs.reinit (owned, communicator);

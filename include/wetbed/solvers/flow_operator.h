@@ -21,6 +21,8 @@ public:
   virtual std::string name () const = 0;
   /** dst = A src. */
   virtual void vmult (BlockVector &dst, const BlockVector &src) const = 0;
+  /** Inner-solve statistics since the last call (diagnostic modes), else empty. */
+  virtual std::string report () const { return {}; }
 };
 
 /** A preconditioner of the flow system, updated from the operator before a solve. */
@@ -34,5 +36,7 @@ public:
    * only with `rebuild_velocity` (otherwise the last one is reused). */
   virtual void update (const FlowOperator &op, bool rebuild_velocity) = 0;
   virtual void vmult (BlockVector &dst, const BlockVector &src) const = 0;
+  /** Inner-solve statistics since the last call (diagnostic modes), else empty. */
+  virtual std::string report () const { return {}; }
 };
 } // namespace wetbed

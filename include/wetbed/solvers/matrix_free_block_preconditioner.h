@@ -16,6 +16,10 @@ namespace wetbed
  * MG one V-cycle of the velocity p-multigrid (VelocityMultigrid), B^T applied
  * matrix-free, L_c^{-1} one smoothed-aggregation V-cycle on the assembled Q1 mobility
  * Laplacian. Constrained rows: y_i = r_i / diagonal_i.
+ *
+ * For diagnosis (`linear solver/inner solves`): `exact` solves L_c by CG to 1e-10 and
+ * the velocity block by GMRES preconditioned with the V-cycle to 1e-10, `exact velocity`
+ * only the velocity block; the inner GMRES iterations are then counted (report()).
  */
 template <int dim>
 class MatrixFreeBlockPreconditioner : public FlowPreconditioner
@@ -25,19 +29,27 @@ public:
 
   /** `schur_source` holds L_c (assembled beside the system); `multigrid` is updated by
    * the flow system with each assembly. */
-  MatrixFreeBlockPreconditioner (const AssembledFlowOperator &schur_source,
-                                 VelocityMultigrid<dim>      &multigrid);
+  MatrixFreeBlockPreconditioner (const LinearSolverParameters &parameters,
+                                 const AssembledFlowOperator  &schur_source,
+                                 VelocityMultigrid<dim>       &multigrid);
 
   /** From a MatrixFreeFlowOperator: the Schur hierarchy always, the velocity
    * multigrid's coarse AMG and smoother with `rebuild_velocity`. */
   void update (const FlowOperator &op, bool rebuild_velocity) override;
   void vmult (BlockVector &dst, const BlockVector &src) const override;
+  /** With exact inner solves: the inner velocity GMRES iterations since the last
+   * report (their mean per application), else empty. */
+  std::string report () const override;
 
 private:
+  void solve_velocity (LocalVector &dst, const LocalVector &src) const;
+
+  const bool                                exact_schur, exact_velocity;
   const AssembledFlowOperator              &schur_source;
   VelocityMultigrid<dim>                   &multigrid;
   const MatrixFreeFlowOperator<dim>        *op = nullptr;
   dealii::TrilinosWrappers::PreconditionAMG schur_amg;
   mutable LocalVector                       gradient, rhs, solution;
+  mutable unsigned int                      inner_iterations = 0, inner_solves = 0;
 };
 } // namespace wetbed

@@ -76,6 +76,8 @@ public:
   void vmult (LocalVector &dst, const LocalVector &src) const;
 
   unsigned int builds = 0;
+  /** With `inner solves = exact coarse`: the coarse GMRES iterations and solves. */
+  mutable unsigned int coarse_iterations = 0, coarse_solves = 0;
 
 private:
   /** The operator's velocity block as the smoother sees it. */
@@ -107,6 +109,7 @@ private:
   void make_coarse_constraints ();
 
   const LinearSolverParameters                &parameters;
+  const bool                                   exact_coarse;
   const MatrixFreeFlowOperator<dim>           *op = nullptr;
   dealii::FESystem<dim>                        coarse_fe;
   dealii::FE_Q<dim>                            fine_scalar;
