@@ -82,21 +82,19 @@ unsigned int FlowLinearSolver::solve (const FlowOperator &op,
     history.record (reused ? "flow FGMRES (reused AMG)" : "flow FGMRES", control, true);
     if (ls.verbose)
     {
-      {
-        const auto  &residuals = control.get_history_data ();
-        const double first     = residuals.empty () ? 0.0 : residuals.front ();
-        pcout << "    FGMRES " << iterations << " iterations"
-              << (reused ? " (reused AMG)" : "") << ", residual " << first << " -> "
-              << control.last_value () << " (target " << target << ", mean reduction "
-              << (first > 0 && iterations > 0
-                      ? std::pow (control.last_value () / first, 1.0 / iterations)
-                      : 0.0)
-              << ")" << std::endl;
-        BlockVector true_residual (rhs);
-        op.vmult (true_residual, solution);
-        true_residual.sadd (-1.0, 1.0, rhs);
-        pcout << "      true residual " << true_residual.l2_norm () << std::endl;
-      }
+      const auto  &residuals = control.get_history_data ();
+      const double first     = residuals.empty () ? 0.0 : residuals.front ();
+      pcout << "    FGMRES " << iterations << " iterations"
+            << (reused ? " (reused AMG)" : "") << ", residual " << first << " -> "
+            << control.last_value () << " (target " << target << ", mean reduction "
+            << (first > 0 && iterations > 0
+                    ? std::pow (control.last_value () / first, 1.0 / iterations)
+                    : 0.0)
+            << ")" << std::endl;
+      BlockVector true_residual (rhs);
+      op.vmult (true_residual, solution);
+      true_residual.sadd (-1.0, 1.0, rhs);
+      pcout << "      true residual " << true_residual.l2_norm () << std::endl;
       const std::string inner = preconditioner.report ();
       if (!inner.empty ())
         pcout << "      " << inner << std::endl;
