@@ -439,6 +439,38 @@ for name in ("bubbles.csv", "bubble_summary.csv"):
     refused(f"resume onto another run's {name}", resume_of(folder), "checkpoint/resume", folder, contains=name)
 
 
+# the same refusals on 2 ranks (rank 0 checks, every rank stops with the same line)
+if shutil.which("mpirun"):
+    folder = copy_of_results("identity")
+    refused("resume with another particle density on 2 ranks",
+            resume_of(folder, "subsection physical properties\n set particle density = 2600\nend"),
+            "checkpoint/resume", folder, ranks=2, contains="physical properties/particle density")
+    state = open(os.path.join(folder, "checkpoint", "state")).read()
+    digit = next(i for i in range(len(state) // 2, len(state)) if state[i].isdigit() and state[i] != "9")
+    open(os.path.join(folder, "checkpoint", "state"), "w").write(state[:digit] + str(int(state[digit]) + 1) + state[digit + 1:])
+    refused("resume from a state with one digit changed on 2 ranks", resume_of(folder), "checkpoint/resume", folder,
+            ranks=2, contains="checksum")
+    refused("previous results without overwrite on 2 ranks", case_into(copy_of_results("previous")), "output/folder",
+            os.path.join(work, "previous"), ranks=2, contains="--overwrite")
+    refused("gravity from the inlet to the outlet on 2 ranks",
+            case_into(copy_of_results("previous"), "subsection output\n set overwrite = true\nend\n"
+                                                  "subsection physical properties\n set gravity = 0, 9.81, 0\nend"),
+            "physical properties/gravity", os.path.join(work, "previous"), ranks=2)
+    refused("inlet velocity log(t) on 2 ranks",
+            case_into(copy_of_results("previous"), "subsection output\n set overwrite = true\nend\n"
+                                                  "subsection boundary conditions\n set inlet superficial velocity = log(t)\nend"),
+            "boundary conditions/inlet superficial velocity", os.path.join(work, "previous"), ranks=2)
+# a later run that overwrote the folder without writing a checkpoint: the earlier run's
+# checkpoint went with its results, so a resume finds none instead of resuming it onto
+# the later run's monitors.csv
+folder = copy_of_results("stale")
+code, _, err = run(case_into(folder, "subsection output\n set overwrite = true\nend\n"
+                                     "subsection checkpoint\n set at end = false\nend"), "stale_later")
+check("an overwriting run removes the earlier run's checkpoint", code == 0 and not os.path.exists(os.path.join(folder, "checkpoint")),
+      f"exit {code} '{last_line(err)}'")
+refused("resume after a later run without a checkpoint", resume_of(folder), "checkpoint/resume", folder)
+
+
 def run_ids(folder, name):
     path = os.path.join(folder, name)
     return [r["run"] for r in csv.DictReader(open(path))] if os.path.isfile(path) else []
