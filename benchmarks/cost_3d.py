@@ -32,8 +32,8 @@ parser.add_argument("--replot", action="store_true", help="tabulate the cached r
 args = parser.parse_args()
 
 settings = {
-    "assembled": "",
-    "matrix-free": "subsection linear solver\n  set operator = matrix-free\nend\n",
+    "assembled": "subsection linear solver\n  set operator = assembled\n  set velocity preconditioner = AMG\nend\n",
+    "matrix-free": "subsection linear solver\n  set operator = matrix-free\n  set velocity preconditioner = AMG\nend\n",
     "p-multigrid": "subsection linear solver\n  set operator = matrix-free\n  set velocity preconditioner = p-multigrid\nend\n",
 }
 work = os.path.join(root, "build", "benchmarks", "cost_3d")

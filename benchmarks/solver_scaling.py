@@ -33,7 +33,8 @@ parser.add_argument("--path", choices=["assembled", "p-multigrid"], default="ass
 parser.add_argument("--ladders", nargs="+", default=None)
 args = parser.parse_args()
 suffix = "" if args.path == "assembled" else "_p_multigrid"
-path_sections = ("" if args.path == "assembled" else
+path_sections = ("subsection linear solver\n set operator = assembled\n set velocity preconditioner = AMG\nend\n"
+                 if args.path == "assembled" else
                  "subsection linear solver\n set operator = matrix-free\n"
                  " set velocity preconditioner = p-multigrid\nend\n")
 work = os.path.join(root, "build", "benchmarks", "solver_scaling" + suffix)

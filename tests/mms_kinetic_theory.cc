@@ -34,6 +34,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <sstream>
 
 using namespace wetbed;
 using dealii::Point;
@@ -434,7 +435,17 @@ int main (int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi (argc, argv, 1);
   const int                                dim    = std::stoi (argv[1]);
   const std::string                        source = argv[2], work = argv[3];
-  const bool        wet = argc > 4 && std::string (argv[4]) == "wet";
+  const bool wet = argc > 4 && std::string (argv[4]) == "wet";
+  // diagnosis: a file of further settings appended to every level's case (e.g. the
+  // other flow-solve path: tests/cases/assembled_settings.prm)
+  std::string extra_settings;
+  if (argc > 5)
+  {
+    std::ifstream      in (argv[5]);
+    std::ostringstream text;
+    text << in.rdbuf ();
+    extra_settings = text.str ();
+  }
   const std::string mesh =
       source + (dim == 2 ? "/tests/meshes/square.geo" : "/tests/meshes/cylinder.geo");
   const std::vector<unsigned int> levels =
@@ -448,7 +459,8 @@ int main (int argc, char **argv)
                                "d_" + (wet ? "wet_" : "") + std::to_string (level);
     std::filesystem::create_directories (folder);
     const std::string prm_file = folder + "/case.prm";
-    std::ofstream (prm_file) << case_text (dim, mesh, level, folder, wet);
+    std::ofstream (prm_file) << case_text (dim, mesh, level, folder, wet)
+                             << extra_settings;
     dealii::ParameterHandler prm;
     const Parameters         parameters = Parameters::read (prm_file, prm);
     const auto [e, n_cells] =

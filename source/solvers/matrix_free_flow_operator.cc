@@ -308,73 +308,127 @@ void MatrixFreeFlowOperator<dim>::apply_cells (LocalVector       *dst_velocity,
                                                const LocalVector *src_pressure,
                                                const unsigned int first_dof) const
 {
-  const bool         pressure_in   = pressure_coupling && src_pressure != nullptr;
-  const bool         pressure_rows = pressure_coupling && dst_pressure != nullptr;
-  const unsigned int n_q           = Utilities::pow (n_q_1d, dim);
-  FEEvaluation<dim, velocity_degree, n_q_1d, 2 * dim, double> u (matrix_free, first_dof);
-  FEEvaluation<dim, 1, n_q_1d, 1, double> p (matrix_free, first_dof + 1);
-  const auto both = EvaluationFlags::values | EvaluationFlags::gradients;
-  for (unsigned int cell = 0; cell < matrix_free.n_cell_batches (); ++cell)
+  // one kernel per combination of blocks in and out, chosen here once per apply: the
+  // smoother's velocity-only apply carries no pressure or continuity work and no
+  // branch at the quadrature points
+  static const auto  kernels = kernel_table (std::make_index_sequence<16> ());
+  const unsigned int flags =
+      (src_velocity != nullptr ? velocity_in : 0u) |
+      (pressure_coupling && src_pressure != nullptr ? pressure_in : 0u) |
+      (dst_velocity != nullptr ? velocity_out : 0u) |
+      (pressure_coupling && dst_pressure != nullptr ? pressure_out : 0u);
+  (this->*kernels[flags]) (
+      dst_velocity, dst_pressure, src_velocity, src_pressure, first_dof);
+}
+
+template <int dim>
+template <std::size_t... flags>
+auto MatrixFreeFlowOperator<dim>::kernel_table (std::index_sequence<flags...>)
+    -> std::array<Kernel, sizeof...(flags)>
+{
+  return {{&MatrixFreeFlowOperator<dim>::template apply_cells_kernel<flags>...}};
+}
+
+template <int dim>
+template <unsigned int flags>
+void MatrixFreeFlowOperator<dim>::apply_cells_kernel (LocalVector       *dst_velocity,
+                                                      LocalVector       *dst_pressure,
+                                                      const LocalVector *src_velocity,
+                                                      const LocalVector *src_pressure,
+                                                      const unsigned int first_dof) const
+{
+  constexpr bool u_in = flags & velocity_in, p_in = flags & pressure_in,
+                 u_out = flags & velocity_out, p_out = flags & pressure_out;
+  if constexpr (!u_out && !p_out)
+    return;
+  else
   {
-    u.reinit (cell);
-    p.reinit (cell);
-    if (src_velocity != nullptr)
-      u.gather_evaluate (*src_velocity, both);
-    if (pressure_in)
-      p.gather_evaluate (*src_pressure, EvaluationFlags::values);
-    const CellData *data = &cell_data[cell * n_q];
-    for (unsigned int q = 0; q < n_q; ++q)
+    const unsigned int n_q = Utilities::pow (n_q_1d, dim);
+    FEEvaluation<dim, velocity_degree, n_q_1d, 2 * dim, double> u (matrix_free,
+                                                                   first_dof);
+    FEEvaluation<dim, 1, n_q_1d, 1, double> p (matrix_free, first_dof + 1);
+    const auto both = EvaluationFlags::values | EvaluationFlags::gradients;
+    for (unsigned int cell = 0; cell < matrix_free.n_cell_batches (); ++cell)
     {
-      const CellData                        &c = data[q];
-      Tensor<1, 2 * dim, VA>                 value;
-      Tensor<1, 2 * dim, Tensor<1, dim, VA>> grad;
-      if (src_velocity != nullptr)
+      u.reinit (cell);
+      p.reinit (cell);
+      if constexpr (u_in)
+        u.gather_evaluate (*src_velocity, both);
+      if constexpr (p_in)
+        p.gather_evaluate (*src_pressure, EvaluationFlags::values);
+      const CellData *data = &cell_data[cell * n_q];
+      for (unsigned int q = 0; q < n_q; ++q)
       {
-        value = u.get_value (q);
-        grad  = u.get_gradient (q);
-      }
-      const VA               pressure = pressure_in ? p.get_value (q) : VA (0.0);
-      Tensor<1, 2 * dim, VA> value_out;
-      Tensor<1, 2 * dim, Tensor<1, dim, VA>> grad_out;
-      VA                                     continuity = 0.0;
-      for (unsigned int k = 0; k < 2; ++k)
-      {
-        const unsigned int o = k * dim, other = (1 - k) * dim;
-        const VA           fraction = k == 0 ? VA (1.0) - c.alpha_s : c.alpha_s;
-        const double       sign     = k == 0 ? -1.0 : 1.0; // grad f_k = sign grad alpha_s
-        VA                 divergence = 0.0, grad_fraction_u = 0.0;
-        Tensor<1, dim, VA> convective;
-        for (unsigned int d = 0; d < dim; ++d)
+        const CellData                        &c = data[q];
+        Tensor<1, 2 * dim, VA>                 value;
+        Tensor<1, 2 * dim, Tensor<1, dim, VA>> grad;
+        if constexpr (u_in)
         {
-          divergence += grad[o + d][d];
-          grad_fraction_u += c.grad_alpha_s[d] * value[o + d];
-          for (unsigned int e = 0; e < dim; ++e)
-            convective[d] += grad[o + d][e] * c.advection[k][e];
+          value = u.get_value (q);
+          grad  = u.get_gradient (q);
         }
-        for (unsigned int d = 0; d < dim; ++d)
+        VA pressure = 0.0;
+        if constexpr (p_in)
+          pressure = p.get_value (q);
+        Tensor<1, 2 * dim, VA>                 value_out;
+        Tensor<1, 2 * dim, Tensor<1, dim, VA>> grad_out;
+        VA                                     continuity = 0.0;
+        for (unsigned int k = 0; k < 2; ++k)
         {
-          value_out[o + d] = c.mass[k] * value[o + d] + c.inertia[k] * convective[d] +
-                             c.drag * (value[o + d] - value[other + d]) -
-                             sign * pressure * c.grad_alpha_s[d];
-          for (unsigned int e = 0; e < dim; ++e)
-            grad_out[o + d][e] = c.viscosity[k] * (grad[o + d][e] + grad[o + e][d]) +
-                                 c.supg[k] * convective[d] * c.advection[k][e];
-          grad_out[o + d][d] += c.bulk[k] * divergence - pressure * fraction;
+          const unsigned int o = k * dim, other = (1 - k) * dim;
+          const VA           fraction = k == 0 ? VA (1.0) - c.alpha_s : c.alpha_s;
+          const double       sign = k == 0 ? -1.0 : 1.0; // grad f_k = sign grad alpha_s
+          if constexpr (u_in)
+          {
+            VA                 divergence = 0.0;
+            Tensor<1, dim, VA> convective;
+            for (unsigned int d = 0; d < dim; ++d)
+            {
+              divergence += grad[o + d][d];
+              for (unsigned int e = 0; e < dim; ++e)
+                convective[d] += grad[o + d][e] * c.advection[k][e];
+            }
+            if constexpr (u_out)
+              for (unsigned int d = 0; d < dim; ++d)
+              {
+                value_out[o + d] = c.mass[k] * value[o + d] +
+                                   c.inertia[k] * convective[d] +
+                                   c.drag * (value[o + d] - value[other + d]);
+                const VA supg = c.supg[k] * convective[d];
+                for (unsigned int e = 0; e < dim; ++e)
+                  grad_out[o + d][e] =
+                      c.viscosity[k] * (grad[o + d][e] + grad[o + e][d]) +
+                      supg * c.advection[k][e];
+                grad_out[o + d][d] += c.bulk[k] * divergence;
+              }
+            if constexpr (p_out)
+            {
+              VA grad_fraction_u = 0.0;
+              for (unsigned int d = 0; d < dim; ++d)
+                grad_fraction_u += c.grad_alpha_s[d] * value[o + d];
+              continuity -= fraction * divergence + sign * grad_fraction_u;
+            }
+          }
+          if constexpr (p_in && u_out)
+            for (unsigned int d = 0; d < dim; ++d)
+            {
+              value_out[o + d] -= sign * pressure * c.grad_alpha_s[d];
+              grad_out[o + d][d] -= pressure * fraction;
+            }
         }
-        continuity -= fraction * divergence + sign * grad_fraction_u;
+        if constexpr (u_out)
+        {
+          u.submit_value (value_out, q);
+          u.submit_gradient (grad_out, q);
+        }
+        if constexpr (p_out)
+          p.submit_value (continuity, q);
       }
-      if (dst_velocity != nullptr)
-      {
-        u.submit_value (value_out, q);
-        u.submit_gradient (grad_out, q);
-      }
-      if (pressure_rows)
-        p.submit_value (continuity, q);
+      if constexpr (u_out)
+        u.integrate_scatter (both, *dst_velocity);
+      if constexpr (p_out)
+        p.integrate_scatter (EvaluationFlags::values, *dst_pressure);
     }
-    if (dst_velocity != nullptr)
-      u.integrate_scatter (both, *dst_velocity);
-    if (pressure_rows)
-      p.integrate_scatter (EvaluationFlags::values, *dst_pressure);
   }
 }
 

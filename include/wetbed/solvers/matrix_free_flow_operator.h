@@ -18,6 +18,7 @@
 #include <functional>
 #include <memory>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace wetbed
@@ -143,6 +144,23 @@ private:
                     const LocalVector *src_u,
                     const LocalVector *src_p,
                     unsigned int       first_dof = 0) const;
+  // apply_cells' kernel for the blocks in flags (velocity_in | pressure_in | ...)
+  static constexpr unsigned int velocity_in = 8, pressure_in = 4, velocity_out = 2,
+                                pressure_out = 1;
+  template <unsigned int flags>
+  void apply_cells_kernel (LocalVector       *dst_u,
+                           LocalVector       *dst_p,
+                           const LocalVector *src_u,
+                           const LocalVector *src_p,
+                           unsigned int       first_dof) const;
+  using Kernel = void (MatrixFreeFlowOperator<dim>::*) (LocalVector *,
+                                                        LocalVector *,
+                                                        const LocalVector *,
+                                                        const LocalVector *,
+                                                        unsigned int) const;
+  template <std::size_t... flags>
+  static auto kernel_table (std::index_sequence<flags...>)
+      -> std::array<Kernel, sizeof...(flags)>;
   void apply_boundary_faces (LocalVector       *dst_u,
                              LocalVector       *dst_p,
                              const LocalVector *src_u,

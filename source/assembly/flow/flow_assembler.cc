@@ -147,8 +147,9 @@ void FlowAssembler<dim>::prepare_face (const CellIterator           &cell,
 
 template <int dim>
 FlowAssembler<dim>::CellCopy::CellCopy (const unsigned int n_dofs,
+                                        const unsigned int n_pressure_dofs,
                                         const unsigned int n_sinks)
-    : system (n_dofs), sink_data (n_sinks)
+    : system (n_dofs, n_pressure_dofs), sink_data (n_sinks)
 {
 }
 
@@ -160,11 +161,15 @@ void FlowAssembler<dim>::local_system (const CellIterator           &cell,
                                        CellCopy                     &copy) const
 {
   FlowCellCopy &system = copy.system;
-  system.matrix        = 0;
-  system.schur         = 0;
-  system.rhs           = 0;
-  copy.cell            = cell;
+  // (a cell without matrix leaves `matrix` as it is: no term writes it)
+  if (system.with_matrix)
+    system.matrix = 0;
+  system.schur = 0;
+  system.rhs   = 0;
+  copy.cell    = cell;
   cell->get_dof_indices (system.dofs);
+  for (unsigned int a = 0; a < system.pressure_dofs.size (); ++a)
+    system.pressure_dofs[a] = system.dofs[scratch.indices.pressure[a]];
   prepare_cell (cell, state, scratch);
   for (const auto &term : terms)
     term->cell (scratch, state, system);
@@ -302,7 +307,8 @@ void FlowAssembler<dim>::assemble (const FlowAssemblyState<dim>    &state,
   const auto &fe = dynamic_cast<const FESystem<dim> &> (flow_dof_handler.get_fe ());
   const FlowCellScratch<dim> scratch (
       mapping, fe, alpha_dof_handler.get_fe (), QGauss<dim> (3), QGauss<dim - 1> (3));
-  const CellCopy                   copy (fe.n_dofs_per_cell (), sinks.size ());
+  const CellCopy copy (
+      fe.n_dofs_per_cell (), scratch.indices.n_pressure_basis, sinks.size ());
   const std::vector<unsigned int> &component = scratch.indices.component;
 
   using Filtered = FilteredIterator<CellIterator>;
@@ -334,7 +340,7 @@ void FlowAssembler<dim>::assemble (const FlowAssemblyState<dim>    &state,
         else
           flow_constraints.distribute_local_to_global (c.rhs, c.dofs, rhs);
         schur_constraints.distribute_local_to_global (
-            c.schur, c.dofs, flow_operator.schur);
+            c.schur, c.pressure_dofs, flow_operator.schur);
         for (unsigned int i = 0; i < sinks.size (); ++i)
           sinks[i]->distribute (
               copy_data.cell, copy_data.coefficients, copy_data.sink_data[i]);

@@ -83,8 +83,9 @@ FlowCellScratch<dim>::FlowCellScratch (const FlowCellScratch &other)
 {
 }
 
-FlowCellCopy::FlowCellCopy (const unsigned int n_dofs)
-    : matrix (n_dofs, n_dofs), schur (n_dofs, n_dofs), rhs (n_dofs), dofs (n_dofs)
+FlowCellCopy::FlowCellCopy (const unsigned int n_dofs, const unsigned int n_pressure_dofs)
+    : matrix (n_dofs, n_dofs), schur (n_pressure_dofs, n_pressure_dofs), rhs (n_dofs),
+      dofs (n_dofs), pressure_dofs (n_pressure_dofs)
 {
 }
 

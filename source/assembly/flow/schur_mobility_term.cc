@@ -19,7 +19,7 @@ void SchurMobilityTerm<dim>::cell (const FlowCellScratch<dim> &s,
                             (a_g * a_s + beta * (a_g + a_s));
     for (unsigned int a = 0; a < n_p; ++a)
       for (unsigned int b = 0; b < n_p; ++b)
-        copy.schur (s.indices.pressure[a], s.indices.pressure[b]) +=
+        copy.schur (a, b) +=
             mobility * (s.grad_phi_p[q][a] * s.grad_phi_p[q][b]) * s.JxW[q];
   }
 }

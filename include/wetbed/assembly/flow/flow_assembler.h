@@ -87,7 +87,7 @@ private:
    * and with sinks the cell's coefficients and each sink's local work. */
   struct CellCopy
   {
-    CellCopy (unsigned int n_dofs, unsigned int n_sinks);
+    CellCopy (unsigned int n_dofs, unsigned int n_pressure_dofs, unsigned int n_sinks);
 
     CellIterator                                              cell;
     FlowCellCopy                                              system;

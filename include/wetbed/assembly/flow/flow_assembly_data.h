@@ -121,13 +121,15 @@ struct BoundaryCellSystem
 /** The local system of one cell (CopyData for WorkStream). */
 struct FlowCellCopy
 {
-  explicit FlowCellCopy (unsigned int n_dofs);
+  FlowCellCopy (unsigned int n_dofs, unsigned int n_pressure_dofs);
 
-  dealii::FullMatrix<double> matrix, schur;
+  dealii::FullMatrix<double> matrix;
+  // L_c between the cell's pressure basis functions (FlowElementIndices::pressure)
+  dealii::FullMatrix<double> schur;
   // false: the terms add only to the rhs (and L_c), not to `matrix`
   bool                                         with_matrix = true;
   dealii::Vector<double>                       rhs;
-  std::vector<dealii::types::global_dof_index> dofs;
+  std::vector<dealii::types::global_dof_index> dofs, pressure_dofs;
   bool                                         owned = false;
   // the weighted unconstrained rows of the boundary velocity DoFs (the reactions)
   bool               captured = false;
