@@ -2,13 +2,17 @@
 """Cost of the 3D column (prm/column_3d.prm) with each flow-solve path, side by side in
 one run on the same cores: `assembled` (the Trilinos matrix, ML on the Q2 velocity
 block), `matrix-free` operator with the same ML preconditioner, and `matrix-free` with
-the velocity p-multigrid. For each refinement and path: wall time per simulated second
+the velocity p-multigrid; `default` sets nothing (`operator = automatic`: the
+p-multigrid path in 3D). Scenes: `dry` (the shipped case), `wet` (with the wet-particle
+closures of prm/wet_column_2d.prm), `amr` (adaptive refinement around the bubbles, one
+level above the mesh, hanging nodes). For each refinement and path: wall time per simulated second
 over the same simulated span, us per flow DoF per step, FGMRES iterations per solve,
 peak memory per rank, the timer split, and the ratio to the assembled path. Regenerates
-the 'cost_3d' section of doc/benchmarks.md.
+the 'cost_3d' section of doc/benchmarks.md (another scene or --section: that section).
 
 usage: python3 benchmarks/cost_3d.py [--end-time 5e-4] [--ranks 2] [--levels 0 1]
-       [--paths assembled matrix-free p-multigrid] [--end-time-level-1 T]
+       [--paths assembled matrix-free p-multigrid default] [--end-time-level-1 T]
+       [--scene dry|wet|amr] [--section NAME]
 (build first: bash scripts/build.sh)
 """
 import argparse
@@ -27,6 +31,8 @@ parser.add_argument("--end-time-level-1", type=float, default=None, help="span a
 parser.add_argument("--ranks", type=int, default=2)
 parser.add_argument("--levels", type=int, nargs="+", default=[0, 1])
 parser.add_argument("--paths", nargs="+", default=["assembled", "matrix-free", "p-multigrid"])
+parser.add_argument("--scene", choices=["dry", "wet", "amr"], default="dry")
+parser.add_argument("--section", default=None, help="doc section (default: cost_3d, or cost_3d_SCENE)")
 parser.add_argument("--no-doc", action="store_true")
 parser.add_argument("--replot", action="store_true", help="tabulate the cached results.json (same arguments)")
 args = parser.parse_args()
@@ -35,8 +41,18 @@ settings = {
     "assembled": "subsection linear solver\n  set operator = assembled\n  set velocity preconditioner = AMG\nend\n",
     "matrix-free": "subsection linear solver\n  set operator = matrix-free\n  set velocity preconditioner = AMG\nend\n",
     "p-multigrid": "subsection linear solver\n  set operator = matrix-free\n  set velocity preconditioner = p-multigrid\nend\n",
+    "default": "",
 }
-work = os.path.join(root, "build", "benchmarks", "cost_3d")
+section = args.section or ("cost_3d" if args.scene == "dry" else "cost_3d_" + args.scene)
+scene = ""
+if args.scene == "wet":
+    wet_case = open(os.path.join(root, "prm", "wet_column_2d.prm")).read()
+    start = wet_case.index("subsection wet particles")
+    scene = "\n" + wet_case[start:wet_case.index("\nend", start) + 4] + "\n"
+elif args.scene == "amr":
+    scene = ("subsection adaptive refinement\n  set enabled = true\n  set interval = 2\n  set initial cycles = 1\n"
+             "  set maximum level = 1\n  set minimum level = 0\nend\n")
+work = os.path.join(root, "build", "benchmarks", section)
 os.makedirs(work, exist_ok=True)
 env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
 base = read_case("column_3d")
@@ -47,7 +63,7 @@ for level in ([] if args.replot else args.levels):
         name = f"level_{level}_{path}"
         prm, folder, _ = write_case(work, name, base, span,
                                     f"\nsubsection mesh\n  set initial refinement = {level}\nend\n"
-                                    "subsection spectrum\n  set enabled = false\nend\n" + settings[path],
+                                    "subsection spectrum\n  set enabled = false\nend\n" + scene + settings[path],
                                     field_interval=0, progress_interval=100000)
         p = subprocess.run(["mpirun", "--oversubscribe", "-np", str(args.ranks), os.path.join(root, "build", "wetbed"),
                             prm, "--overwrite"], capture_output=True, text=True, env=env)
@@ -79,8 +95,10 @@ names = ["flow assembly", "matrix-free coefficients", "preconditioner setup", "K
          "solids pressure correction"]
 lines = [f"Command: `python3 benchmarks/cost_3d.py --end-time {args.end_time}"
          + (f" --end-time-level-1 {args.end_time_level_1}" if args.end_time_level_1 else "")
-         + f" --ranks {args.ranks} --levels {' '.join(map(str, args.levels))} --paths {' '.join(args.paths)}` "
-         f"(`prm/column_3d.prm`, {args.ranks} MPI ranks on this 2-core machine, the paths run one after another "
+         + f" --ranks {args.ranks} --levels {' '.join(map(str, args.levels))} --paths {' '.join(args.paths)}"
+         + (f" --scene {args.scene}" if args.scene != "dry" else "")
+         + (f" --section {args.section}" if args.section else "") + "` "
+         f"(`prm/column_3d.prm`{'' if args.scene == 'dry' else ', scene ' + args.scene}, {args.ranks} MPI ranks on this 2-core machine, the paths run one after another "
          "in one invocation).", "",
          "| refinement | cells | flow DoFs | path | simulated s | steps (rejected) | wall s | s per simulated s | "
          "speed-up vs assembled | µs per DoF per step | FGMRES its per solve | peak MB per rank | "
@@ -102,5 +120,6 @@ for path in args.paths:
 for line in lines:
     print(line)
 if not args.no_doc:
-    replace_doc_section(root, "cost_3d", "Cost of the 3D column by flow-solve path", lines)
+    title = "Cost of the 3D column by flow-solve path" + ("" if section == "cost_3d" else f" ({section})")
+    replace_doc_section(root, section, title, lines)
     print("updated doc/benchmarks.md")
