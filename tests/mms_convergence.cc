@@ -480,14 +480,7 @@ int main (int argc, char **argv)
   const std::string no_penetration = rotation ? kind.substr (kind.find ('-') + 1) : "";
   const std::string source = argv[3], work = argv[4];
   // diagnosis: a file of further settings appended to every level's case
-  std::string extra_settings;
-  if (argc > 5 && std::string (argv[5]) != "-")
-  {
-    std::ifstream      in (argv[5]);
-    std::ostringstream text;
-    text << in.rdbuf ();
-    extra_settings = text.str ();
-  }
+  std::string extra_settings = testing::extra_settings (argc, argv, 5);
   if (polynomial)
     extra_settings =
         "subsection solids stress\n set frictional onset = 0.5\nend\n" + extra_settings;

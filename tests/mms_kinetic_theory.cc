@@ -438,14 +438,7 @@ int main (int argc, char **argv)
   const bool wet = argc > 4 && std::string (argv[4]) == "wet";
   // diagnosis: a file of further settings appended to every level's case (e.g. the
   // other flow-solve path: tests/cases/assembled_settings.prm)
-  std::string extra_settings;
-  if (argc > 5)
-  {
-    std::ifstream      in (argv[5]);
-    std::ostringstream text;
-    text << in.rdbuf ();
-    extra_settings = text.str ();
-  }
+  const std::string extra_settings = testing::extra_settings (argc, argv, 5);
   const std::string mesh =
       source + (dim == 2 ? "/tests/meshes/square.geo" : "/tests/meshes/cylinder.geo");
   const std::vector<unsigned int> levels =

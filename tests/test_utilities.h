@@ -4,14 +4,28 @@
 
 #include <array>
 #include <cmath>
+#include <fstream>
 #include <functional>
 #include <iomanip>
 #include <iostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
 namespace wetbed::testing
 {
+/** The settings file argv[index] (appended to every case of a test), or "" when the
+ * argument is absent or "-". */
+inline std::string extra_settings (const int argc, char **argv, const int index)
+{
+  if (argc <= index || std::string (argv[index]) == "-")
+    return "";
+  std::ifstream      in (argv[index]);
+  std::ostringstream text;
+  text << in.rdbuf ();
+  return text.str ();
+}
+
 /** Counts failed checks; a test's main returns failures() != 0. */
 inline unsigned int &failure_count ()
 {
