@@ -612,6 +612,9 @@ elif check == "matrix_free":
         found = [float(v) for v in re.findall(r"\|A_mf x - A x\| / \(\|A\| \|x\|\) = (\S+)", run.stdout)]
         expect(len(found) > 0 and max(found) <= limit,
                f"{what}: matrix-free = assembled operator on {len(found)} assemblies (largest |A_mf x - A x| / (|A| |x|) {max(found or [1]):.1e} <= {limit:.0e})")
+        lifted = [float(v) for v in re.findall(r"\|b_mf - b\| / \|b\| = (\S+)", run.stdout)]
+        expect(len(lifted) == len(found) and max(lifted) <= limit,
+               f"{what}: the prescribed values carried into the rhs matrix-free = by local matrices on {len(lifted)} assemblies (largest |b_mf - b| / |b| {max(lifted or [1]):.1e} <= {limit:.0e})")
     # solved to 1e-11: the two paths' iterates then agree to ~1e-9 (at the default 1e-8
     # the different preconditioners leave differences of ~1e-6)
     short = ("subsection time stepping\n set end time = 0.02\nend\n"

@@ -155,7 +155,8 @@ void MatrixFreeFlowOperator<dim>::build_maps (
   }
 
   const types::global_dof_index n_velocity = owned[0].size ();
-  const IndexSet                own[2]     = {velocity_dof_handler.locally_owned_dofs (),
+  n_velocity_flow_dofs                     = n_velocity;
+  const IndexSet own[2]                    = {velocity_dof_handler.locally_owned_dofs (),
                                               pressure_dof_handler.locally_owned_dofs ()};
   for (unsigned int b = 0; b < 2; ++b)
   {
@@ -218,6 +219,7 @@ void MatrixFreeFlowOperator<dim>::begin_update (const FlowAssembler<dim> &assemb
   const unsigned int n_fq = Utilities::pow (n_q_1d, dim - 1);
   cell_data.assign (matrix_free.n_cell_batches () * n_q, CellData ());
   face_data.assign (matrix_free.n_boundary_face_batches () * n_fq, FaceData ());
+  face_batch_active.clear ();
   pressure_coupling = false;
 }
 
@@ -306,7 +308,7 @@ void MatrixFreeFlowOperator<dim>::apply_cells (LocalVector       *dst_velocity,
                                                LocalVector       *dst_pressure,
                                                const LocalVector *src_velocity,
                                                const LocalVector *src_pressure,
-                                               const unsigned int first_dof) const
+                                               const Layout       layout) const
 {
   // one kernel per combination of blocks in and out, chosen here once per apply: the
   // smoother's velocity-only apply carries no pressure or continuity work and no
@@ -318,7 +320,7 @@ void MatrixFreeFlowOperator<dim>::apply_cells (LocalVector       *dst_velocity,
       (dst_velocity != nullptr ? velocity_out : 0u) |
       (pressure_coupling && dst_pressure != nullptr ? pressure_out : 0u);
   (this->*kernels[flags]) (
-      dst_velocity, dst_pressure, src_velocity, src_pressure, first_dof);
+      dst_velocity, dst_pressure, src_velocity, src_pressure, layout);
 }
 
 template <int dim>
@@ -335,7 +337,7 @@ void MatrixFreeFlowOperator<dim>::apply_cells_kernel (LocalVector       *dst_vel
                                                       LocalVector       *dst_pressure,
                                                       const LocalVector *src_velocity,
                                                       const LocalVector *src_pressure,
-                                                      const unsigned int first_dof) const
+                                                      const Layout       layout) const
 {
   constexpr bool u_in = flags & velocity_in, p_in = flags & pressure_in,
                  u_out = flags & velocity_out, p_out = flags & pressure_out;
@@ -343,19 +345,34 @@ void MatrixFreeFlowOperator<dim>::apply_cells_kernel (LocalVector       *dst_vel
     return;
   else
   {
-    const unsigned int n_q = Utilities::pow (n_q_1d, dim);
-    FEEvaluation<dim, velocity_degree, n_q_1d, 2 * dim, double> u (matrix_free,
-                                                                   first_dof);
-    FEEvaluation<dim, 1, n_q_1d, 1, double> p (matrix_free, first_dof + 1);
-    const auto both = EvaluationFlags::values | EvaluationFlags::gradients;
+    const unsigned int n_q   = Utilities::pow (n_q_1d, dim);
+    const unsigned int write = layout == Layout::plain ? 2 : 0,
+                       read  = layout == Layout::constrained ? 0 : 2;
+    using VelocityEvaluation =
+        FEEvaluation<dim, velocity_degree, n_q_1d, 2 * dim, double>;
+    using PressureEvaluation = FEEvaluation<dim, 1, n_q_1d, 1, double>;
+    VelocityEvaluation u (matrix_free, write), u_read (matrix_free, read);
+    PressureEvaluation p (matrix_free, write + 1), p_read (matrix_free, read + 1);
+    // the lifting reads through another DoF index than it writes
+    VelocityEvaluation &u_source = read == write ? u : u_read;
+    PressureEvaluation &p_source = read == write ? p : p_read;
+    const auto          both     = EvaluationFlags::values | EvaluationFlags::gradients;
     for (unsigned int cell = 0; cell < matrix_free.n_cell_batches (); ++cell)
     {
       u.reinit (cell);
       p.reinit (cell);
       if constexpr (u_in)
-        u.gather_evaluate (*src_velocity, both);
+      {
+        if (read != write)
+          u_source.reinit (cell);
+        u_source.gather_evaluate (*src_velocity, both);
+      }
       if constexpr (p_in)
-        p.gather_evaluate (*src_pressure, EvaluationFlags::values);
+      {
+        if (read != write)
+          p_source.reinit (cell);
+        p_source.gather_evaluate (*src_pressure, EvaluationFlags::values);
+      }
       const CellData *data = &cell_data[cell * n_q];
       for (unsigned int q = 0; q < n_q; ++q)
       {
@@ -364,12 +381,12 @@ void MatrixFreeFlowOperator<dim>::apply_cells_kernel (LocalVector       *dst_vel
         Tensor<1, 2 * dim, Tensor<1, dim, VA>> grad;
         if constexpr (u_in)
         {
-          value = u.get_value (q);
-          grad  = u.get_gradient (q);
+          value = u_source.get_value (q);
+          grad  = u_source.get_gradient (q);
         }
         VA pressure = 0.0;
         if constexpr (p_in)
-          pressure = p.get_value (q);
+          pressure = p_source.get_value (q);
         Tensor<1, 2 * dim, VA>                 value_out;
         Tensor<1, 2 * dim, Tensor<1, dim, VA>> grad_out;
         VA                                     continuity = 0.0;
@@ -433,29 +450,56 @@ void MatrixFreeFlowOperator<dim>::apply_cells_kernel (LocalVector       *dst_vel
 }
 
 template <int dim>
-void MatrixFreeFlowOperator<dim>::apply_boundary_faces (
-    LocalVector       *dst_velocity,
-    LocalVector       *dst_pressure,
-    const LocalVector *src_velocity,
-    const LocalVector *src_pressure,
-    const unsigned int first_dof) const
+void MatrixFreeFlowOperator<dim>::apply_boundary_faces (LocalVector       *dst_velocity,
+                                                        LocalVector       *dst_pressure,
+                                                        const LocalVector *src_velocity,
+                                                        const LocalVector *src_pressure,
+                                                        const Layout       layout) const
 {
-  const unsigned int n_fq  = Utilities::pow (n_q_1d, dim - 1);
-  const unsigned int first = matrix_free.n_inner_face_batches ();
-  FEFaceEvaluation<dim, velocity_degree, n_q_1d, 2 * dim, double> u (
-      matrix_free, true, first_dof);
-  FEFaceEvaluation<dim, 1, n_q_1d, 1, double> p (matrix_free, true, first_dof + 1);
-  const auto both = EvaluationFlags::values | EvaluationFlags::gradients;
-  for (unsigned int face = first; face < first + matrix_free.n_boundary_face_batches ();
-       ++face)
+  const unsigned int n_fq      = Utilities::pow (n_q_1d, dim - 1);
+  const unsigned int first     = matrix_free.n_inner_face_batches ();
+  const unsigned int n_batches = matrix_free.n_boundary_face_batches ();
+  if (face_batch_active.size () != n_batches)
   {
+    face_batch_active.assign (n_batches, false);
+    for (unsigned int batch = 0; batch < n_batches; ++batch)
+      for (unsigned int q = 0; q < n_fq; ++q)
+      {
+        const FaceData &c = face_data[batch * n_fq + q];
+        for (unsigned int lane = 0; lane < VA::size (); ++lane)
+          face_batch_active[batch] =
+              face_batch_active[batch] || c.backflow[lane] != 0.0 ||
+              c.friction[0][lane] != 0.0 || c.friction[1][lane] != 0.0 ||
+              c.slips[0][lane] != 0.0 || c.slips[1][lane] != 0.0;
+      }
+  }
+  const unsigned int write = layout == Layout::plain ? 2 : 0,
+                     read  = layout == Layout::constrained ? 0 : 2;
+  using VelocityEvaluation =
+      FEFaceEvaluation<dim, velocity_degree, n_q_1d, 2 * dim, double>;
+  using PressureEvaluation = FEFaceEvaluation<dim, 1, n_q_1d, 1, double>;
+  VelocityEvaluation u (matrix_free, true, write), u_read (matrix_free, true, read);
+  PressureEvaluation p (matrix_free, true, write + 1),
+      p_read (matrix_free, true, read + 1);
+  VelocityEvaluation &u_source = read == write ? u : u_read;
+  PressureEvaluation &p_source = read == write ? p : p_read;
+  const auto          both     = EvaluationFlags::values | EvaluationFlags::gradients;
+  for (unsigned int face = first; face < first + n_batches; ++face)
+  {
+    if (!face_batch_active[face - first])
+      continue;
     const FaceData *data = &face_data[(face - first) * n_fq];
     u.reinit (face);
     p.reinit (face);
+    if (read != write)
+    {
+      u_source.reinit (face);
+      p_source.reinit (face);
+    }
     if (src_velocity != nullptr)
-      u.gather_evaluate (*src_velocity, both);
+      u_source.gather_evaluate (*src_velocity, both);
     if (src_pressure != nullptr)
-      p.gather_evaluate (*src_pressure, EvaluationFlags::values);
+      p_source.gather_evaluate (*src_pressure, EvaluationFlags::values);
     for (unsigned int q = 0; q < n_fq; ++q)
     {
       const FaceData                        &c = data[q];
@@ -463,10 +507,10 @@ void MatrixFreeFlowOperator<dim>::apply_boundary_faces (
       Tensor<1, 2 * dim, Tensor<1, dim, VA>> grad;
       if (src_velocity != nullptr)
       {
-        value = u.get_value (q);
-        grad  = u.get_gradient (q);
+        value = u_source.get_value (q);
+        grad  = u_source.get_gradient (q);
       }
-      const VA    pressure = src_pressure != nullptr ? p.get_value (q) : VA (0.0);
+      const VA    pressure = src_pressure != nullptr ? p_source.get_value (q) : VA (0.0);
       const auto  n_h      = u.get_normal_vector (q);
       const auto &n        = c.wall_normal;
       Tensor<1, 2 * dim, VA>                 value_out;
@@ -616,9 +660,9 @@ std::array<double, 3> MatrixFreeFlowOperator<dim>::weighted_row_sums (
   plain_u.update_ghost_values ();
   plain_p.update_ghost_values ();
   plain_result = 0.0;
-  apply_cells (&plain_result, nullptr, &plain_u, &plain_p, 2);
+  apply_cells (&plain_result, nullptr, &plain_u, &plain_p, Layout::plain);
   if (!face_data.empty ())
-    apply_boundary_faces (&plain_result, nullptr, &plain_u, &plain_p, 2);
+    apply_boundary_faces (&plain_result, nullptr, &plain_u, &plain_p, Layout::plain);
   plain_result.compress (VectorOperation::add);
   plain_u.zero_out_ghost_values ();
   plain_p.zero_out_ghost_values ();
@@ -626,6 +670,44 @@ std::array<double, 3> MatrixFreeFlowOperator<dim>::weighted_row_sums (
     for (const auto &[position, weight] : weights[b])
       sums[b] += weight * plain_result.local_element (local_of_block[0][position]);
   return sums;
+}
+
+template <int dim>
+void MatrixFreeFlowOperator<dim>::subtract_lifting (
+    BlockVector &rhs, const AffineConstraints<double> &flow_constraints) const
+{
+  LocalVector *source[2] = {&plain_u, &plain_p}, *result[2] = {&dst_u, &dst_p};
+  bool         any = false;
+  for (unsigned int b = 0; b < 2; ++b)
+  {
+    *source[b] = 0.0;
+    for (unsigned int i = 0; i < constrained[b].size (); ++i)
+    {
+      const double value = flow_constraints.get_inhomogeneity (
+          constrained_global[b][i] + (b == 1 ? n_velocity_flow_dofs : 0));
+      source[b]->local_element (local_of_block[b][constrained[b][i]]) = value;
+      any = any || value != 0.0;
+    }
+  }
+  if (Utilities::MPI::max (any ? 1 : 0, plain_u.get_mpi_communicator ()) == 0)
+    return;
+  for (unsigned int b = 0; b < 2; ++b)
+  {
+    source[b]->update_ghost_values ();
+    *result[b] = 0.0;
+  }
+  apply_cells (&dst_u, &dst_p, &plain_u, &plain_p, Layout::lifting);
+  if (!face_data.empty ())
+    apply_boundary_faces (&dst_u, &dst_p, &plain_u, &plain_p, Layout::lifting);
+  for (unsigned int b = 0; b < 2; ++b)
+  {
+    result[b]->compress (VectorOperation::add);
+    source[b]->zero_out_ghost_values ();
+    // (the constrained rows receive nothing: the write resolves the constraints)
+    double *values = rhs.block (b).begin ();
+    for (unsigned int i = 0; i < local_of_block[b].size (); ++i)
+      values[i] -= result[b]->local_element (local_of_block[b][i]);
+  }
 }
 
 template <int dim>

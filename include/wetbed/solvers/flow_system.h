@@ -79,8 +79,13 @@ public:
    * unconstrained cell systems of the last assembly at `solution`; collective. */
   std::array<double, 3> boundary_reactions (const BlockVector &solution) const;
 
-  /** Applies both operators to a random vector and prints their difference. */
-  void check_operator ();
+  /** Applies both operators to a random vector and prints their difference; and
+   * prints how far the matrix-free lifting of the inhomogeneous constraints
+   * (MatrixFreeFlowOperator::subtract_lifting on an rhs assembled without it) is from
+   * the last assembly's rhs, which carried them by local matrices. */
+  void check_operator (const FlowAssemblyState<dim>            &state,
+                       const dealii::AffineConstraints<double> &flow_constraints,
+                       const dealii::AffineConstraints<double> &schur_constraints);
 
   /** The alpha_s and the flow iterate the last assembly linearised about. */
   const AlphaVector &linearisation_alpha () const { return assembled_alpha; }

@@ -120,6 +120,14 @@ public:
       const BlockVector                                                 &solution,
       const std::array<std::vector<std::pair<unsigned int, double>>, 3> &weights) const;
 
+  /** rhs -= C^T A u_D: the values of the inhomogeneous constraints (the inlet) carried
+   * into the rhs by one application of the operator to them (unconstrained read,
+   * constrained write), instead of local matrices of the cells that hold them
+   * (doc/theory.md, "Matrix-free flow operator"). After the coefficients of an update;
+   * collective. */
+  void subtract_lifting (BlockVector                             &rhs,
+                         const dealii::AffineConstraints<double> &flow_constraints) const;
+
   /** Bytes held: MatrixFree, the coefficients, the maps and work vectors. */
   std::size_t memory_consumption () const;
 
@@ -137,13 +145,20 @@ private:
     dealii::Tensor<1, dim, VA> wall_normal;
   };
 
-  // the integrals; a null pointer leaves that block out (no input or no output);
-  // first_dof 0: with the constraints, 2: without
+  // which DoF indices of matrix_free the integrals read from and write to: 0, 1 with
+  // the constraints, 2, 3 without
+  enum class Layout
+  {
+    constrained, // read and write with the constraints (the operator)
+    plain,       // neither (the unconstrained rows of the boundary reactions)
+    lifting      // read without, write with (the inhomogeneous constraints' rhs)
+  };
+  // the integrals; a null pointer leaves that block out (no input or no output)
   void apply_cells (LocalVector       *dst_u,
                     LocalVector       *dst_p,
                     const LocalVector *src_u,
                     const LocalVector *src_p,
-                    unsigned int       first_dof = 0) const;
+                    Layout             layout = Layout::constrained) const;
   // apply_cells' kernel for the blocks in flags (velocity_in | pressure_in | ...)
   static constexpr unsigned int velocity_in = 8, pressure_in = 4, velocity_out = 2,
                                 pressure_out = 1;
@@ -152,12 +167,12 @@ private:
                            LocalVector       *dst_p,
                            const LocalVector *src_u,
                            const LocalVector *src_p,
-                           unsigned int       first_dof) const;
+                           Layout             layout) const;
   using Kernel = void (MatrixFreeFlowOperator<dim>::*) (LocalVector *,
                                                         LocalVector *,
                                                         const LocalVector *,
                                                         const LocalVector *,
-                                                        unsigned int) const;
+                                                        Layout) const;
   template <std::size_t... flags>
   static auto kernel_table (std::index_sequence<flags...>)
       -> std::array<Kernel, sizeof...(flags)>;
@@ -165,7 +180,7 @@ private:
                              LocalVector       *dst_p,
                              const LocalVector *src_u,
                              const LocalVector *src_p,
-                             unsigned int       first_dof = 0) const;
+                             Layout             layout = Layout::constrained) const;
   /** Where each locally owned cell and boundary face sits in the batches. */
   void find_batch_places ();
   void build_maps (const dealii::DoFHandler<dim>           &flow_dof_handler,
@@ -182,6 +197,10 @@ private:
   bool                                pressure_coupling = false;
   std::vector<CellData>               cell_data; // [batch * n_q + q]
   std::vector<FaceData>               face_data; // [(face - inner) * n_face_q + q]
+  // per boundary face batch: whether any of its coefficients is nonzero (a face
+  // without friction, Nitsche slip or backflow adds nothing); found at the first
+  // application after an update
+  mutable std::vector<bool> face_batch_active;
   // batch * lanes + lane of each locally owned cell, by active cell index
   std::vector<unsigned int> cell_place;
   // (face - inner) * lanes + lane of each boundary face, by active cell index * faces
@@ -195,7 +214,8 @@ private:
   std::array<std::vector<unsigned int>, 2>                    constrained;
   std::array<std::vector<dealii::types::global_dof_index>, 2> constrained_global;
   std::array<std::vector<double>, 2>                          constrained_diagonal;
-  std::vector<unsigned int> velocity_constrained_local; // owned, MatrixFree layout
-  mutable LocalVector       src_u, src_p, dst_u, dst_p, plain_u, plain_p, plain_result;
+  std::vector<unsigned int>       velocity_constrained_local; // owned, MatrixFree layout
+  dealii::types::global_dof_index n_velocity_flow_dofs = 0;   // block 0 of the flow
+  mutable LocalVector src_u, src_p, dst_u, dst_p, plain_u, plain_p, plain_result;
 };
 } // namespace wetbed

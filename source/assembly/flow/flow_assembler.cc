@@ -318,13 +318,6 @@ void FlowAssembler<dim>::assemble (const FlowAssemblyState<dim>    &state,
       [&] (const Filtered &cell, FlowCellScratch<dim> &s, CellCopy &c)
       {
         c.system.with_matrix = matrix;
-        if (!matrix)
-        {
-          cell->get_dof_indices (c.system.dofs);
-          for (const auto dof : c.system.dofs)
-            c.system.with_matrix = c.system.with_matrix ||
-                                   flow_constraints.is_inhomogeneously_constrained (dof);
-        }
         local_system (cell, state, sinks, s, c);
       },
       [&] (const CellCopy &copy_data)
@@ -335,8 +328,6 @@ void FlowAssembler<dim>::assemble (const FlowAssemblyState<dim>    &state,
         if (matrix)
           flow_constraints.distribute_local_to_global (
               c.matrix, c.rhs, c.dofs, flow_operator.system, rhs);
-        else if (c.with_matrix)
-          flow_constraints.distribute_local_to_global (c.rhs, c.dofs, rhs, c.matrix);
         else
           flow_constraints.distribute_local_to_global (c.rhs, c.dofs, rhs);
         schur_constraints.distribute_local_to_global (

@@ -52,9 +52,9 @@ public:
   using Sinks        = std::vector<FlowCoefficientSink<dim> *>;
 
   /** The system (with `matrix`; without it only the rhs and L_c: the matrix-free
-   * operator applies the system, and the cells with inhomogeneous constraints build
-   * their local matrix only to carry the constraints into the rhs; the capture then
-   * keeps only the rhs part of the boundary rows). With `sinks`, in the same pass, the
+   * operator applies the system and carries the inhomogeneous constraints into the rhs
+   * afterwards, MatrixFreeFlowOperator::subtract_lifting; the capture then keeps only
+   * the rhs part of the boundary rows). With `sinks`, in the same pass, the
    * coefficients of every cell and of its boundary faces (from the same fields and
    * closures) go to each sink: its local work on the worker threads, its distribute()
    * in the copier. */
