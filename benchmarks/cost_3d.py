@@ -7,7 +7,8 @@ p-multigrid path in 3D). Scenes: `dry` (the shipped case), `wet` (with the wet-p
 closures of prm/wet_column_2d.prm), `amr` (adaptive refinement around the bubbles, one
 level above the mesh, hanging nodes). For each refinement and path: wall time per simulated second
 over the same simulated span, us per flow DoF per step, FGMRES iterations per solve,
-peak memory per rank, the timer split, and the ratio to the assembled path. Regenerates
+peak memory per rank and per flow DoF, the bytes per flow DoF of the
+operator, L_c and the p-multigrid (ML hierarchies not counted), the timer split, and the ratio to the assembled path. Regenerates
 the 'cost_3d' section of doc/benchmarks.md (another scene or --section: that section).
 
 usage: python3 benchmarks/cost_3d.py [--end-time 5e-4] [--ranks 2] [--levels 0 1]
@@ -74,6 +75,8 @@ for level in ([] if args.replot else args.levels):
         cells = int(re.search(r"Mesh: (\d+) cells", out).group(1))
         fin = re.search(r"Finished: (\d+) steps \((\d+) rejected\), wall ([\d.e+-]+) s, ([\d.e+-]+) s per simulated second", out)
         cost = re.search(r"Cost: ([\d.e+-]+) us per flow DoF per step \((\d+) flow DoFs.*peak memory ([\d.e+-]+) MB per rank", out)
+        parts = re.search(r"Flow solve memory .*?: operator ([\d.e+-]+), L_c ([\d.e+-]+), p-multigrid ([\d.e+-]+)", out)
+        total = re.search(r"MB in all = ([\d.e+-]+) kB per flow DoF", out)
         sections = {}
         for m in re.finditer(r"^\| ([a-zA-Z -]+?)\s+\|\s+(\d+) \|\s+[\d.e+-]+s\s+\d+ \|\s+([\d.e+-]+)s \|", out, re.M):
             sections[m.group(1).strip()] = float(m.group(3))
@@ -83,11 +86,13 @@ for level in ([] if args.replot else args.levels):
         r = dict(level=level, path=path, cells=cells, dofs=int(cost.group(2)), steps=int(fin.group(1)),
                  rejected=int(fin.group(2)), wall=float(fin.group(3)), per_second=float(fin.group(4)),
                  per_dof=float(cost.group(1)), memory=float(cost.group(3)), per_solve=per_solve, sections=sections,
-                 span=span)
+                 span=span, peak_per_dof=float(total.group(1)),
+                 solver_per_dof=sum(float(parts.group(i)) for i in (1, 2, 3)))
         results.append(r)
         print(f"{name}: {cells} cells, {r['dofs']} flow DoFs, {r['steps']} steps ({r['rejected']} rejected), "
               f"wall {r['wall']:.1f} s, {r['per_second']:.0f} s per simulated s, {r['per_dof']:.1f} us/DoF/step, "
-              f"FGMRES {per_solve:.1f} per solve, peak {r['memory']:.0f} MB/rank", flush=True)
+              f"FGMRES {per_solve:.1f} per solve, peak {r['memory']:.0f} MB/rank, {r['peak_per_dof']:.1f} kB/DoF peak, "
+              f"{r['solver_per_dof']:.0f} B/DoF operator + L_c + multigrid", flush=True)
 if not args.replot:
     json.dump(results, open(os.path.join(work, "results.json"), "w"), indent=1)
 
@@ -102,14 +107,15 @@ lines = [f"Command: `python3 benchmarks/cost_3d.py --end-time {args.end_time}"
          "in one invocation).", "",
          "| refinement | cells | flow DoFs | path | simulated s | steps (rejected) | wall s | s per simulated s | "
          "speed-up vs assembled | µs per DoF per step | FGMRES its per solve | peak MB per rank | "
+         "peak kB per DoF (all ranks) | operator + L_c + multigrid B per DoF | "
          + " | ".join(n + " s" for n in names) + " |",
-         "|" + "---|" * (12 + len(names))]
+         "|" + "---|" * (14 + len(names))]
 for r in results:
     reference = next((x for x in results if x["level"] == r["level"] and x["path"] == "assembled"), None)
     ratio = f"{reference['per_second'] / r['per_second']:.2f}×" if reference else "—"
     lines.append(f"| {r['level']} | {r['cells']} | {r['dofs']} | {r['path']} | {r['span']:g} | {r['steps']} ({r['rejected']}) | "
                  f"{r['wall']:.1f} | {r['per_second']:.0f} | {ratio} | {r['per_dof']:.1f} | {r['per_solve']:.1f} | "
-                 f"{r['memory']:.0f} | " + " | ".join(f"{r['sections'].get(n, 0):.1f}" for n in names) + " |")
+                 f"{r['memory']:.0f} | {r.get('peak_per_dof', 0):.1f} | {r.get('solver_per_dof', 0):.0f} | " + " | ".join(f"{r['sections'].get(n, 0):.1f}" for n in names) + " |")
 levels = sorted({r["level"] for r in results})
 for path in args.paths:
     runs = [next((r for r in results if r["level"] == l and r["path"] == path), None) for l in levels]

@@ -316,6 +316,21 @@ FlowSystem<dim>::boundary_reactions (const BlockVector &solution) const
   return residual;
 }
 
+template <int dim>
+typename FlowSystem<dim>::Memory FlowSystem<dim>::memory_consumption () const
+{
+  Memory memory;
+  memory.op = op.system.memory_consumption ();
+  if (parameters.linear_solver.matrix_free)
+    memory.op += matrix_free_op.memory_consumption ();
+  memory.schur = op.schur.memory_consumption ();
+  if (parameters.linear_solver.p_multigrid)
+    memory.multigrid = multigrid.memory_consumption ();
+  memory.vectors = rhs.memory_consumption () + assembled_flow.memory_consumption () +
+                   assembled_alpha.memory_consumption ();
+  return memory;
+}
+
 template class FlowSystem<2>;
 template class FlowSystem<3>;
 } // namespace wetbed

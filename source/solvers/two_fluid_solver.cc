@@ -723,7 +723,16 @@ typename TwoFluidSolver<dim>::RunEnd TwoFluidSolver<dim>::run ()
           << " us per flow DoF per step (" << flow_dof_handler.n_dofs ()
           << " flow DoFs, operator " << flow_system.krylov_operator ().name ()
           << "), peak memory " << peak.max << " MB per rank (max), " << peak.sum
-          << " MB in all" << std::endl;
+          << " MB in all = " << 1024.0 * peak.sum / flow_dof_handler.n_dofs ()
+          << " kB per flow DoF" << std::endl;
+    const auto parts = flow_system.memory_consumption ();
+    const auto sum   = [&] (const std::size_t bytes)
+    { return dealii::Utilities::MPI::sum (static_cast<double> (bytes), communicator); };
+    const double n = flow_dof_handler.n_dofs ();
+    pcout << "Flow solve memory (all ranks, bytes per flow DoF): operator "
+          << sum (parts.op) / n << ", L_c " << sum (parts.schur) / n << ", p-multigrid "
+          << sum (parts.multigrid) / n << ", vectors " << sum (parts.vectors) / n
+          << " (ML hierarchies not counted)" << std::endl;
   }
   timer.print_wall_time_statistics (communicator);
   write_spectra ();

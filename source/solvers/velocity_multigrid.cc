@@ -461,6 +461,24 @@ void VelocityMultigrid<dim>::vmult (LocalVector &dst, const LocalVector &src) co
   smoother.step (dst, src);
 }
 
+template <int dim>
+std::size_t VelocityMultigrid<dim>::memory_consumption () const
+{
+  std::size_t bytes =
+      coarse_dofs.memory_consumption () + coarse_constraints.memory_consumption () +
+      coarse_matrix.memory_consumption () + transfer.memory_consumption ();
+  if (jacobi)
+    bytes += jacobi->nodes.size () * sizeof (jacobi->nodes[0]) +
+             jacobi->inverse.size () * sizeof (double) +
+             jacobi->singles.size () * sizeof (unsigned int);
+  for (const auto &v : entries)
+    bytes += v.memory_consumption ();
+  for (const LocalVector *v : {&residual, &coarse_residual, &coarse_solution})
+    bytes += v->memory_consumption ();
+  return bytes + coarse_rhs_t.memory_consumption () +
+         coarse_solution_t.memory_consumption ();
+}
+
 template class VelocityMultigrid<2>;
 template class VelocityMultigrid<3>;
 } // namespace wetbed

@@ -107,6 +107,17 @@ public:
     return !parameters.linear_solver.p_multigrid ||
            parameters.linear_solver.check_operator;
   }
+  /** Bytes this rank holds for the flow solve, by part (ML's hierarchies are not
+   * counted: Trilinos does not report them). */
+  struct Memory
+  {
+    std::size_t op        = 0; // the system matrix, or the matrix-free data
+    std::size_t schur     = 0; // L_c
+    std::size_t multigrid = 0; // the p-multigrid's Q1 space, matrix, transfer, blocks
+    std::size_t vectors   = 0; // rhs, linearisation point
+  };
+  Memory memory_consumption () const;
+
   /** The operator FGMRES applies (`linear solver/operator`). */
   const FlowOperator       &krylov_operator () const;
   const FlowAssembler<dim> &flow_assembler () const { return *assembler; }

@@ -75,6 +75,10 @@ public:
   /** dst = one V-cycle applied to src (velocity layout of the operator). */
   void vmult (LocalVector &dst, const LocalVector &src) const;
 
+  /** Bytes held: the Q1 space, its matrix, the transfer, the node blocks and the work
+   * vectors (not ML's hierarchy, which Trilinos does not report). */
+  std::size_t memory_consumption () const;
+
   unsigned int builds = 0;
   /** With `inner solves = exact coarse`: the coarse GMRES iterations and solves. */
   mutable unsigned int coarse_iterations = 0, coarse_solves = 0;
