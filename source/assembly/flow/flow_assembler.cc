@@ -52,10 +52,11 @@ void FlowAssembler<dim>::prepare_cell (const CellIterator           &cell,
 {
   const CellIterator alpha_cell (
       &cell->get_triangulation (), cell->level (), cell->index (), &alpha_dof_handler);
-  s.fe_values.reinit (cell);
+  s.velocity_values.reinit (
+      static_cast<const typename Triangulation<dim>::cell_iterator &> (cell));
+  s.pressure_values.reinit (
+      static_cast<const typename Triangulation<dim>::cell_iterator &> (cell));
   s.alpha_values.reinit (alpha_cell);
-  const FEValuesExtractors::Vector velocity[2] = {FEValuesExtractors::Vector (0),
-                                                  FEValuesExtractors::Vector (dim)};
   s.alpha_values.get_function_values (*state.alpha, s.alpha_s);
   s.alpha_values.get_function_gradients (*state.alpha, s.grad_alpha_s);
   s.alpha_values.get_function_values (*state.alpha_old, s.alpha_s_old);
@@ -64,32 +65,42 @@ void FlowAssembler<dim>::prepare_cell (const CellIterator           &cell,
   cell->get_dof_values (*state.flow, s.flow_local);
   cell->get_dof_values (*state.flow_old, s.flow_old_local);
   cell->get_dof_values (*state.flow_old2, s.flow_old2_local);
-  for (unsigned int k = 0; k < 2; ++k)
-  {
-    const auto &view = s.fe_values[velocity[k]];
-    view.get_function_values_from_local_dof_values (local (s.flow_local), s.u[k]);
-    view.get_function_gradients_from_local_dof_values (local (s.flow_local), s.grad_u[k]);
-    view.get_function_values_from_local_dof_values (local (s.flow_old_local), s.u_old[k]);
-    view.get_function_values_from_local_dof_values (local (s.flow_old2_local),
-                                                    s.u_old2[k]);
-  }
-  const unsigned int n_q = s.JxW.size ();
+  const unsigned int n_q = s.JxW.size (), n_u = s.indices.n_velocity_basis;
   for (unsigned int q = 0; q < n_q; ++q)
   {
-    s.JxW[q]  = s.fe_values.JxW (q);
-    s.slip[q] = (s.u[0][q] - s.u[1][q]).norm ();
-    for (unsigned int a = 0; a < s.indices.n_velocity_basis; ++a)
+    s.JxW[q] = s.velocity_values.JxW (q);
+    for (unsigned int a = 0; a < n_u; ++a)
     {
-      const unsigned int i = s.indices.velocity[0][a];
-      s.phi[q][a]          = s.fe_values.shape_value (i, q);
-      s.grad_phi[q][a]     = s.fe_values.shape_grad (i, q);
+      s.phi[q][a]      = s.velocity_values.shape_value (a, q);
+      s.grad_phi[q][a] = s.velocity_values.shape_grad (a, q);
     }
     for (unsigned int b = 0; b < s.indices.n_pressure_basis; ++b)
     {
-      const unsigned int i = s.indices.pressure[b];
-      s.phi_p[q][b]        = s.fe_values.shape_value (i, q);
-      s.grad_phi_p[q][b]   = s.fe_values.shape_grad (i, q);
+      s.phi_p[q][b]      = s.pressure_values.shape_value (b, q);
+      s.grad_phi_p[q][b] = s.pressure_values.shape_grad (b, q);
     }
+    // both phases' velocities (current: with gradients; the two previous steps)
+    for (unsigned int k = 0; k < 2; ++k)
+      for (unsigned int d = 0; d < dim; ++d)
+      {
+        const std::vector<unsigned int> &rows  = s.indices.velocity[k * dim + d];
+        double                           value = 0, old = 0, old2 = 0;
+        Tensor<1, dim>                   gradient;
+        for (unsigned int a = 0; a < n_u; ++a)
+        {
+          const double phi = s.phi[q][a];
+          value += s.flow_local[rows[a]] * phi;
+          old += s.flow_old_local[rows[a]] * phi;
+          old2 += s.flow_old2_local[rows[a]] * phi;
+          gradient += s.flow_local[rows[a]] * s.grad_phi[q][a];
+        }
+        s.u[k][q][d]      = value;
+        s.u_old[k][q][d]  = old;
+        s.u_old2[k][q][d] = old2;
+        for (unsigned int e = 0; e < dim; ++e)
+          s.grad_u[k][q][d][e] = gradient[e];
+      }
+    s.slip[q] = (s.u[0][q] - s.u[1][q]).norm ();
   }
   // every closure, once per quadrature point (and P_s at the alpha_s nodes)
   alpha_cell->get_dof_values (*state.alpha, s.alpha_nodal);

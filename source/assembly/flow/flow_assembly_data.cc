@@ -25,11 +25,16 @@ FlowCellScratch<dim>::FlowCellScratch (const dealii::Mapping<dim>        &mappin
                                        const dealii::FiniteElement<dim>  &alpha_fe,
                                        const dealii::Quadrature<dim>     &quadrature,
                                        const dealii::Quadrature<dim - 1> &face_quadrature)
-    : fe_values (mapping,
-                 flow_fe,
-                 quadrature,
-                 dealii::update_values | dealii::update_gradients |
-                     dealii::update_quadrature_points | dealii::update_JxW_values),
+    : flow_fe (&flow_fe),
+      velocity_values (mapping,
+                       flow_fe.base_element (0),
+                       quadrature,
+                       dealii::update_values | dealii::update_gradients |
+                           dealii::update_quadrature_points | dealii::update_JxW_values),
+      pressure_values (mapping,
+                       flow_fe.base_element (1),
+                       quadrature,
+                       dealii::update_values | dealii::update_gradients),
       alpha_values (mapping,
                     alpha_fe,
                     quadrature,
@@ -74,12 +79,11 @@ FlowCellScratch<dim>::FlowCellScratch (const dealii::Mapping<dim>        &mappin
 
 template <int dim>
 FlowCellScratch<dim>::FlowCellScratch (const FlowCellScratch &other)
-    : FlowCellScratch (
-          other.fe_values.get_mapping (),
-          dynamic_cast<const dealii::FESystem<dim> &> (other.fe_values.get_fe ()),
-          other.alpha_values.get_fe (),
-          other.fe_values.get_quadrature (),
-          other.face_values.get_quadrature ())
+    : FlowCellScratch (other.velocity_values.get_mapping (),
+                       *other.flow_fe,
+                       other.alpha_values.get_fe (),
+                       other.velocity_values.get_quadrature (),
+                       other.face_values.get_quadrature ())
 {
 }
 

@@ -10,7 +10,7 @@ void ManufacturedSourceTerm<dim>::cell (const FlowCellScratch<dim> &s,
   const unsigned int n_u = s.indices.n_velocity_basis, n_p = s.indices.n_pressure_basis;
   for (unsigned int q = 0; q < s.JxW.size (); ++q)
   {
-    const dealii::Point<dim>    &x        = s.fe_values.quadrature_point (q);
+    const dealii::Point<dim>    &x        = s.velocity_values.quadrature_point (q);
     const dealii::Tensor<1, dim> force[2] = {solution->gas_momentum_source (x),
                                              solution->solids_momentum_source (x)};
     const double volume_source = solution->mixture_volume_source (x) * s.JxW[q];
