@@ -126,6 +126,10 @@ for path in args.paths:
 for line in lines:
     print(line)
 if not args.no_doc:
+    # kept with the repository: benchmarks/cost_plot.py draws doc/cost_vs_dofs.png from it
+    stored = os.path.join(root, "benchmarks", "results", "cost_3d")
+    os.makedirs(stored, exist_ok=True)
+    json.dump({"command": lines[0], "results": results}, open(os.path.join(stored, section + ".json"), "w"), indent=1)
     title = "Cost of the 3D column by flow-solve path" + ("" if section == "cost_3d" else f" ({section})")
     replace_doc_section(root, section, title, lines)
     print("updated doc/benchmarks.md")
