@@ -346,8 +346,7 @@ void MatrixFreeFlowOperator<dim>::apply_cells_kernel (LocalVector       *dst_vel
   else
   {
     const unsigned int n_q   = Utilities::pow (n_q_1d, dim);
-    const unsigned int write = layout == Layout::plain ? 2 : 0,
-                       read  = layout == Layout::constrained ? 0 : 2;
+    const auto [read, write] = dof_indices (layout);
     using VelocityEvaluation =
         FEEvaluation<dim, velocity_degree, n_q_1d, 2 * dim, double>;
     using PressureEvaluation = FEEvaluation<dim, 1, n_q_1d, 1, double>;
@@ -473,8 +472,7 @@ void MatrixFreeFlowOperator<dim>::apply_boundary_faces (LocalVector       *dst_v
               c.slips[0][lane] != 0.0 || c.slips[1][lane] != 0.0;
       }
   }
-  const unsigned int write = layout == Layout::plain ? 2 : 0,
-                     read  = layout == Layout::constrained ? 0 : 2;
+  const auto [read, write] = dof_indices (layout);
   using VelocityEvaluation =
       FEFaceEvaluation<dim, velocity_degree, n_q_1d, 2 * dim, double>;
   using PressureEvaluation = FEFaceEvaluation<dim, 1, n_q_1d, 1, double>;

@@ -153,6 +153,12 @@ private:
     plain,       // neither (the unconstrained rows of the boundary reactions)
     lifting      // read without, write with (the inhomogeneous constraints' rhs)
   };
+  // the velocity DoF index (the pressure's is the next) that `layout` reads from, and
+  // the one it writes to
+  static std::pair<unsigned int, unsigned int> dof_indices (Layout layout)
+  {
+    return {layout == Layout::constrained ? 0u : 2u, layout == Layout::plain ? 2u : 0u};
+  }
   // the integrals; a null pointer leaves that block out (no input or no output)
   void apply_cells (LocalVector       *dst_u,
                     LocalVector       *dst_p,

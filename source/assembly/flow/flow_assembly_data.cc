@@ -25,8 +25,7 @@ FlowCellScratch<dim>::FlowCellScratch (const dealii::Mapping<dim>        &mappin
                                        const dealii::FiniteElement<dim>  &alpha_fe,
                                        const dealii::Quadrature<dim>     &quadrature,
                                        const dealii::Quadrature<dim - 1> &face_quadrature)
-    : flow_fe (&flow_fe),
-      velocity_values (mapping,
+    : velocity_values (mapping,
                        flow_fe.base_element (0),
                        quadrature,
                        dealii::update_values | dealii::update_gradients |
@@ -79,11 +78,12 @@ FlowCellScratch<dim>::FlowCellScratch (const dealii::Mapping<dim>        &mappin
 
 template <int dim>
 FlowCellScratch<dim>::FlowCellScratch (const FlowCellScratch &other)
-    : FlowCellScratch (other.velocity_values.get_mapping (),
-                       *other.flow_fe,
-                       other.alpha_values.get_fe (),
-                       other.velocity_values.get_quadrature (),
-                       other.face_values.get_quadrature ())
+    : FlowCellScratch (
+          other.velocity_values.get_mapping (),
+          dynamic_cast<const dealii::FESystem<dim> &> (other.face_values.get_fe ()),
+          other.alpha_values.get_fe (),
+          other.velocity_values.get_quadrature (),
+          other.face_values.get_quadrature ())
 {
 }
 

@@ -73,13 +73,12 @@ struct FlowCellScratch
                    const dealii::Quadrature<dim - 1> &face_quadrature);
   FlowCellScratch (const FlowCellScratch &other);
 
-  // the flow element; FE values of its scalar Q2 (velocity) and Q1 (pressure) bases:
-  // the terms read the bases as phi/phi_p (one basis per component), so the system's
-  // 2 dim + 1 copies are not evaluated
-  const dealii::FESystem<dim> *flow_fe;
-  dealii::FEValues<dim>        velocity_values, pressure_values, alpha_values;
-  dealii::FEFaceValues<dim>    face_values, alpha_face_values;
-  FlowElementIndices           indices;
+  // FE values of the flow element's scalar Q2 (velocity) and Q1 (pressure) bases: the
+  // terms read the bases as phi/phi_p (one basis per component), so the system's
+  // 2 dim + 1 copies are not evaluated on cells (face_values: the flow element)
+  dealii::FEValues<dim>     velocity_values, pressure_values, alpha_values;
+  dealii::FEFaceValues<dim> face_values, alpha_face_values;
+  FlowElementIndices        indices;
 
   std::vector<double> JxW;
   // the Q2 and Q1 basis at the quadrature points, [q][a]
