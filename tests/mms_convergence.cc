@@ -463,11 +463,32 @@ std::vector<unsigned int> numbers (const std::string &list)
 //   LEVELS, STEPS: comma-separated lists replacing the defaults (work-precision study,
 //         benchmarks/mms_work_precision.py); each run prints a "run:" line with its
 //         cells, steps, errors and wall time
+//   --reference=SETTINGS.prm (anywhere after KIND): the first runs of the ladder (two,
+//         or N with --reference-runs=N) repeated with these settings appended as well
+//         (another operator or preconditioner): their errors must equal the ladder's to
+//         1e-6 (the same discretisation solved to 1e-10)
 int main (int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi (argc, argv, 1);
-  const int                                dim  = std::stoi (argv[1]);
-  const std::string                        kind = argv[2];
+  std::string                              reference_settings;
+  unsigned int                             reference_runs = 2;
+  {
+    const std::string flag = "--reference=", runs_flag = "--reference-runs=";
+    int               kept = 1;
+    for (int i = 1; i < argc; ++i)
+    {
+      const std::string argument = argv[i];
+      if (argument.rfind (flag, 0) == 0)
+        reference_settings = argument.substr (flag.size ());
+      else if (argument.rfind (runs_flag, 0) == 0)
+        reference_runs = std::stoul (argument.substr (runs_flag.size ()));
+      else
+        argv[kept++] = argv[i];
+    }
+    argc = kept;
+  }
+  const int         dim  = std::stoi (argv[1]);
+  const std::string kind = argv[2];
   // transient-*: polynomial fields in space (the time error alone); space-time-*: the
   // trigonometric fields of two-fluid times s(t) (space and time errors together)
   const bool polynomial = kind.rfind ("transient", 0) == 0;
@@ -518,35 +539,47 @@ int main (int argc, char **argv)
     for (const unsigned int level : levels)
       runs.emplace_back (level, 1);
 
+  constexpr double transient_end = 0.3; // s
+  // one run of the ladder (or of the reference, with its settings appended): its errors
+  // and cell count
+  const auto run_case = [&] (const unsigned int level,
+                             const unsigned int n_steps,
+                             const std::string &settings,
+                             const std::string &suffix)
+  {
+    TimeStepping time;
+    if (transient)
+      time = TimeStepping{transient_end, n_steps, bdf_order};
+    const std::string folder = work + "/mms_" + std::to_string (dim) + "d_" + kind + "_" +
+                               std::to_string (level) +
+                               (transient ? "_" + std::to_string (n_steps) : "") + suffix;
+    std::filesystem::create_directories (folder);
+    const std::string prm_file = folder + "/case.prm";
+    std::ofstream (prm_file) << case_text (dim, mesh, level, folder, no_penetration, time)
+                             << (hanging ? hanging_nodes_text (level) : "") << settings;
+    dealii::ParameterHandler prm;
+    const Parameters         parameters = Parameters::read (prm_file, prm);
+    const auto               start      = std::chrono::steady_clock::now ();
+    const auto               result =
+        dim == 2 ? run_level<2> (parameters, two_fluid, rotation, transient, polynomial)
+                               : run_level<3> (parameters, two_fluid, rotation, transient, polynomial);
+    const double wall =
+        std::chrono::duration<double> (std::chrono::steady_clock::now () - start)
+            .count ();
+    std::cout << std::defaultfloat << "run" << suffix << ": level " << level << " cells "
+              << static_cast<unsigned long> (result.second) << " steps " << n_steps
+              << " bdf " << bdf_order << " wall " << wall << " errors";
+    for (const double value : result.first)
+      std::cout << " " << std::setprecision (6) << std::scientific << value;
+    std::cout << std::defaultfloat << std::endl;
+    return result;
+  };
+
   std::vector<std::array<double, 5>> errors;
   std::vector<double>                sizes;
   for (const auto &[level, n_steps] : runs)
   {
-    TimeStepping time;
-    if (transient)
-      time = TimeStepping{0.3, n_steps, bdf_order};
-    const std::string folder = work + "/mms_" + std::to_string (dim) + "d_" + kind + "_" +
-                               std::to_string (level) +
-                               (transient ? "_" + std::to_string (n_steps) : "");
-    std::filesystem::create_directories (folder);
-    const std::string prm_file = folder + "/case.prm";
-    std::ofstream (prm_file) << case_text (dim, mesh, level, folder, no_penetration, time)
-                             << (hanging ? hanging_nodes_text (level) : "")
-                             << extra_settings;
-    dealii::ParameterHandler prm;
-    const Parameters         parameters = Parameters::read (prm_file, prm);
-    const auto               start      = std::chrono::steady_clock::now ();
-    const auto [e, n_cells] =
-        dim == 2 ? run_level<2> (parameters, two_fluid, rotation, transient, polynomial)
-                 : run_level<3> (parameters, two_fluid, rotation, transient, polynomial);
-    const double wall =
-        std::chrono::duration<double> (std::chrono::steady_clock::now () - start)
-            .count ();
-    std::cout << "run: level " << level << " cells " << n_cells << " steps " << n_steps
-              << " bdf " << bdf_order << " wall " << wall << " errors";
-    for (const double value : e)
-      std::cout << " " << std::setprecision (6) << std::scientific << value;
-    std::cout << std::defaultfloat << std::endl;
+    const auto [e, n_cells] = run_case (level, n_steps, extra_settings, "");
     // the hanging nodes are there: more cells than the uniform mesh of the level (the
     // square has 16 cells at level 0), fewer than the next level's
     if (hanging)
@@ -554,7 +587,7 @@ int main (int argc, char **argv)
                           n_cells < 16 * std::pow (4.0, level + 1),
                       "a locally refined mesh at level " + std::to_string (level));
     errors.push_back (e);
-    sizes.push_back (polynomial ? time.end_time / n_steps
+    sizes.push_back (polynomial ? transient_end / n_steps
                                 : std::pow (n_cells, -1.0 / dim));
   }
 
@@ -573,5 +606,25 @@ int main (int argc, char **argv)
             << "\n";
   if (errors.size () > 1)
     testing::report_rates (errors, sizes, names, expected);
+  if (!reference_settings.empty ())
+  {
+    const std::string settings = extra_settings + testing::file_text (reference_settings);
+    for (unsigned int i = 0; i < std::min<std::size_t> (reference_runs, runs.size ());
+         ++i)
+    {
+      const auto e =
+          run_case (runs[i].first, runs[i].second, settings, "_reference").first;
+      double difference = 0;
+      for (unsigned int k = 0; k < e.size (); ++k)
+        difference = std::max (difference, std::abs (e[k] - errors[i][k]) / errors[i][k]);
+      std::cout << "reference " << reference_settings << ", level " << runs[i].first
+                << ": errors equal to " << std::scientific << std::setprecision (2)
+                << difference << " (relative)" << std::defaultfloat << "\n";
+      testing::check (difference <= 1e-6,
+                      "the errors with the reference settings, level " +
+                          std::to_string (runs[i].first) + ", differ by " +
+                          std::to_string (difference));
+    }
+  }
   return testing::finish ("mms_convergence");
 }

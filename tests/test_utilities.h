@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <functional>
 #include <iomanip>
@@ -14,16 +15,27 @@
 
 namespace wetbed::testing
 {
+/** The text of a file; a missing or unreadable file ends the test (exit 1). */
+inline std::string file_text (const std::string &path)
+{
+  std::ifstream in (path);
+  if (!in)
+  {
+    std::cerr << "cannot read " << path << std::endl;
+    std::exit (1);
+  }
+  std::ostringstream text;
+  text << in.rdbuf ();
+  return text.str ();
+}
+
 /** The settings file argv[index] (appended to every case of a test), or "" when the
  * argument is absent or "-". */
 inline std::string extra_settings (const int argc, char **argv, const int index)
 {
   if (argc <= index || std::string (argv[index]) == "-")
     return "";
-  std::ifstream      in (argv[index]);
-  std::ostringstream text;
-  text << in.rdbuf ();
-  return text.str ();
+  return file_text (argv[index]);
 }
 
 /** Counts failed checks; a test's main returns failures() != 0. */
