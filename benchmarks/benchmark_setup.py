@@ -153,17 +153,22 @@ def timer_seconds(text, name):
     return float(m.group(1)) if m else float("nan")
 
 
-def solver_run(root, work, name, base, end_time, sections):
-    """Runs WORK/NAME (BASE + SECTIONS, serial, no field output, no checkpoint, no bubble
-    analysis) and returns its solver figures: cells, steps, FGMRES iterations per solve
-    (repeated solves after an AMG rebuild counted), Krylov, preconditioner-setup and
-    total wall seconds, setups, solves and iterations."""
+def solver_run(root, work, name, base, end_time, sections, ranks=1):
+    """Runs WORK/NAME (BASE + SECTIONS, serial or on RANKS MPI ranks, no field output, no
+    checkpoint, no bubble analysis) and returns its solver figures: cells, steps, FGMRES
+    iterations per solve (repeated solves after an AMG rebuild counted), Krylov,
+    preconditioner-setup and total wall seconds, setups, solves and iterations."""
     import subprocess
     sections += ("\nsubsection checkpoint\n set at end = false\nend\n"
                  "subsection bubble analysis\n set enabled = false\nend\n")
     prm, folder, log = write_case(work, name, base, end_time, sections, field_interval=1000)
+    command = [os.path.join(root, "build", "wetbed"), prm, "--overwrite"]
+    env = None
+    if ranks > 1:
+        command = ["mpirun", "--oversubscribe", "-np", str(ranks)] + command
+        env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
     with open(log, "w") as out:
-        subprocess.run([os.path.join(root, "build", "wetbed"), prm, "--overwrite"], stdout=out, stderr=subprocess.STDOUT, check=True)
+        subprocess.run(command, stdout=out, stderr=subprocess.STDOUT, check=True, env=env)
     rows = list(csv.DictReader(open(os.path.join(folder, "monitors.csv"))))[1:]
     text = open(log).read()
     solves = int(re.search(r"\| Krylov solve\s*\|\s*(\d+)", text).group(1))

@@ -17,8 +17,12 @@ p-multigrid (`linear solver/operator = matrix-free`, `velocity preconditioner =
 p-multigrid`) and write the 'solver_scaling_p_multigrid' section (and
 doc/solver_scaling_p_multigrid.png); `--ladders` picks ladders by name.
 
+With `--case column_3d` the h ladder at a fixed Courant number runs on the 3D column
+(prm/column_3d.prm, refinements 0 and 1: 792 and 6,336 cells, dt = 2e-4 and 1e-4 s) on 2
+MPI ranks, and writes the 'solver_scaling_3d' section (plus the path's suffix).
+
 usage: python3 benchmarks/solver_scaling.py [--end-time 0.01] [--path assembled|p-multigrid]
-       [--ladders h "h, fixed Courant number" ...]
+       [--ladders h "h, fixed Courant number" ...] [--case bubbling_bed_2d|column_3d]
 (build first: bash scripts/build.sh)
 """
 import argparse
@@ -31,16 +35,19 @@ parser = argparse.ArgumentParser()
 parser.add_argument("--end-time", type=float, default=0.01)
 parser.add_argument("--path", choices=["assembled", "p-multigrid"], default="assembled")
 parser.add_argument("--ladders", nargs="+", default=None)
+parser.add_argument("--case", choices=["bubbling_bed_2d", "column_3d"], default="bubbling_bed_2d")
 args = parser.parse_args()
-suffix = "" if args.path == "assembled" else "_p_multigrid"
+column = args.case == "column_3d"
+suffix = ("_3d" if column else "") + ("" if args.path == "assembled" else "_p_multigrid")
 path_sections = ("subsection linear solver\n set operator = assembled\n set velocity preconditioner = AMG\nend\n"
                  if args.path == "assembled" else
                  "subsection linear solver\n set operator = matrix-free\n"
                  " set velocity preconditioner = p-multigrid\nend\n")
 work = os.path.join(root, "build", "benchmarks", "solver_scaling" + suffix)
 os.makedirs(work, exist_ok=True)
-base = read_case("bubbling_bed_2d")
+base = read_case(args.case) + ("\nsubsection spectrum\n set enabled = false\nend\n" if column else "")
 wet = read_case("wet_column_2d")
+ranks = 2 if column else 1
 
 
 def mesh(level):
@@ -52,10 +59,10 @@ def fixed_step(dt):
             f" set maximum time step = {dt:g}\nend\n")
 
 
-def courant_ladder(prefix):
-    """levels 0-2 with dt halved per refinement: the same Courant number on every mesh"""
-    return [(f"level {level}, Δt = {4e-4 / 2**level:g} s", f"{prefix}_{level}", mesh(level) + fixed_step(4e-4 / 2**level))
-            for level in (0, 1, 2)]
+def courant_ladder(prefix, dt0=4e-4, levels=(0, 1, 2)):
+    """dt halved per refinement: the same Courant number on every mesh"""
+    return [(f"level {level}, Δt = {dt0 / 2**level:g} s", f"{prefix}_{level}", mesh(level) + fixed_step(dt0 / 2**level))
+            for level in levels]
 
 
 ladders = {
@@ -67,6 +74,8 @@ ladders = {
     "drag": [(f"d = {d * 1e6:g} µm", f"d_{d * 1e6:g}", mesh(1) + f"subsection physical properties\n"
               f" set particle diameter = {d:g}\nend\n") for d in (700e-6, 350e-6, 175e-6)],
 }
+if column:
+    ladders = {"h, 3D column, fixed Courant number": courant_ladder("column_courant", 2e-4, (0, 1))}
 if args.ladders:
     unknown = [name for name in args.ladders if name not in ladders]
     if unknown:
@@ -75,15 +84,23 @@ if args.ladders:
 command = f"python3 benchmarks/solver_scaling.py --end-time {args.end_time:g}"
 if args.path != "assembled":
     command += f" --path {args.path}"
+if column:
+    command += " --case column_3d"
 if args.ladders:
     command += " --ladders " + " ".join(f'"{name}"' for name in args.ladders)
 settings = ("default solver settings" if args.path == "assembled" else
             "matrix-free operator with the velocity p-multigrid, otherwise default solver settings")
-lines = [f"Command: `{command}` (prm/bubbling_bed_2d.prm, "
-         f"first {args.end_time:g} s of the start-up, serial, {settings}; the Δt and drag ladders at "
-         "level 1 (600 cells), the drag varied through the particle diameter, Stokes drag ∝ 1/d²; the wet ladders "
-         "on prm/wet_column_2d.prm; 'same Δt': the adaptive start-up steps, identical on every mesh; 'fixed Courant "
-         "number': Δt halved with h).", "",
+if column:
+    settings = ("assembled operator with the ML velocity preconditioner" if args.path == "assembled" else
+                "default solver settings (in 3D the matrix-free operator with the velocity p-multigrid)")
+    description = (f"prm/column_3d.prm, first {args.end_time:g} s of the start-up, 2 MPI ranks, {settings}; "
+                   "'fixed Courant number': Δt halved with h")
+else:
+    description = (f"prm/bubbling_bed_2d.prm, first {args.end_time:g} s of the start-up, serial, {settings}; the Δt "
+                   "and drag ladders at level 1 (600 cells), the drag varied through the particle diameter, Stokes drag "
+                   "∝ 1/d²; the wet ladders on prm/wet_column_2d.prm; 'same Δt': the adaptive start-up steps, identical "
+                   "on every mesh; 'fixed Courant number': Δt halved with h")
+lines = [f"Command: `{command}` ({description}).", "",
          "| ladder | run | cells | steps | FGMRES its/solve | setups | setup s per build | Krylov ms per iteration | total s |",
          "|---|---|---|---|---|---|---|---|---|"]
 growth = {}
@@ -92,7 +109,8 @@ for ladder, runs in ladders.items():
     its = []
     curves[ladder] = []
     for label, name, sections in runs:
-        r = solver_run(root, work, name, wet if "wet" in ladder else base, args.end_time, sections + path_sections)
+        r = solver_run(root, work, name, wet if "wet" in ladder else base, args.end_time, sections + path_sections,
+                       ranks)
         its.append(r["its"])
         curves[ladder].append((r["cells"], r["its"]))
         row = (f"| {ladder} | {label} | {r['cells']} | {r['steps']} | {r['its']:.1f} | {r['setups']} | "
@@ -109,8 +127,10 @@ def over(ladder):
 
 summary = [f"{ladder} {over(ladder)}" for ladder in ladders if ladder.startswith("h")]
 others = [f"the {ladder} ladder {growth[ladder][2]:+.0f}%" for ladder in ladders if not ladder.startswith("h")]
-lines += ["", "Growth of FGMRES iterations per solve over two refinements (level 0 → 2, target ≤ 30%; "
-          "'fixed Courant number': Δt ∝ h, 'same Δt': Courant number × 4): " + "; ".join(summary)
+lines += ["", "Growth of FGMRES iterations per solve over " + ("one refinement (level 0 → 1" if column else
+          "two refinements (level 0 → 2") + ", target ≤ 30% over two"
+          + ("" if column else "; 'fixed Courant number': Δt ∝ h, 'same Δt': Courant number × 4") + "): "
+          + "; ".join(summary)
           + ("; " + ", ".join(others) if others else "") + "."]
 print(lines[-1])
 lines += ["", f"![iterations against cells](solver_scaling{suffix}.png)"]
@@ -122,7 +142,8 @@ fig, ax = plt.subplots(figsize=(6.5, 4.2))
 for i, ladder in enumerate(name for name in ladders if name.startswith("h")):
     cells, per_solve = zip(*curves[ladder])
     ax.plot(cells, per_solve, "o-" if "Courant" in ladder else "s--", color=f"C{i}",
-            label=("dry bed" if "wet" not in ladder else "wet column") + (", Δt ∝ h" if "Courant" in ladder else ", same Δt"))
+            label=("3D column" if column else "dry bed" if "wet" not in ladder else "wet column")
+            + (", Δt ∝ h" if "Courant" in ladder else ", same Δt"))
 ax.set_xscale("log")
 ax.set_xlabel("cells")
 ax.set_ylabel("FGMRES iterations per solve")
@@ -132,5 +153,6 @@ ax.set_title("Coupled solve: iterations against refinement")
 fig.tight_layout()
 fig.savefig(os.path.join(root, "doc", f"solver_scaling{suffix}.png"), dpi=110)
 replace_doc_section(root, "solver_scaling" + suffix,
-                    "Solver scaling: iterations against h, Δt and drag (2D bed, start-up)"
+                    ("Solver scaling: iterations against h (3D column, start-up)" if column else
+                     "Solver scaling: iterations against h, Δt and drag (2D bed, start-up)")
                     + ("" if args.path == "assembled" else ", matrix-free operator with the velocity p-multigrid"), lines)

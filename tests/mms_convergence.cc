@@ -466,7 +466,8 @@ std::vector<unsigned int> numbers (const std::string &list)
 //   --reference=SETTINGS.prm (anywhere after KIND): the first runs of the ladder (two,
 //         or N with --reference-runs=N) repeated with these settings appended as well
 //         (another operator or preconditioner): their errors must equal the ladder's to
-//         1e-6 (the same discretisation solved to 1e-10)
+//         1e-5 (the same discretisation, FGMRES to 1e-10, 6 outer iterations of the
+//         nonlinear closures: up to 9e-7 apart measured; 1e-3 FGMRES: 7e-4)
 int main (int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi (argc, argv, 1);
@@ -620,7 +621,7 @@ int main (int argc, char **argv)
       std::cout << "reference " << reference_settings << ", level " << runs[i].first
                 << ": errors equal to " << std::scientific << std::setprecision (2)
                 << difference << " (relative)" << std::defaultfloat << "\n";
-      testing::check (difference <= 1e-6,
+      testing::check (difference <= 1e-5,
                       "the errors with the reference settings, level " +
                           std::to_string (runs[i].first) + ", differ by " +
                           std::to_string (difference));

@@ -307,16 +307,17 @@ void LinearSolverParameters::declare_parameters (ParameterHandler &prm)
       "solve repeated. Measured on the 3D column: 10 cuts the wall time by "
       "40% against 1 (rebuild every solve); neutral in 2D");
   prm.declare_entry ("verbose", "false", Bool (), "Print every linear solve.");
-  prm.declare_entry ("operator",
-                     "automatic",
-                     Selection ("automatic|assembled|matrix-free"),
-                     "How FGMRES applies the flow system: `assembled` (the Trilinos "
-                     "matrix) or `matrix-free` (sum-factorised cell and face integrals "
-                     "of the same bilinear form, doc/theory.md \"Matrix-free flow "
-                     "operator\"). `automatic`: matrix-free in 3D (with the "
-                     "p-multigrid: 9.6x less wall time than assembled on the 792-cell "
-                     "column, 16-17x on 6,336 cells, doc/benchmarks.md), assembled in "
-                     "2D (where the assembled path is faster).");
+  prm.declare_entry (
+      "operator",
+      "automatic",
+      Selection ("automatic|assembled|matrix-free"),
+      "How FGMRES applies the flow system: `assembled` (the Trilinos "
+      "matrix) or `matrix-free` (sum-factorised cell and face integrals "
+      "of the same bilinear form, doc/theory.md \"Matrix-free flow "
+      "operator\"). `automatic`: matrix-free in 3D (with the "
+      "p-multigrid: 5.5-9.6x less wall time than assembled on the 792-cell "
+      "column, 11-16x on 6,336 cells, doc/benchmarks.md), assembled in "
+      "2D (where the assembled path is faster).");
   prm.declare_entry (
       "velocity preconditioner",
       "automatic",
