@@ -209,47 +209,59 @@ void VelocityMultigrid<dim>::local_cell (
   // (trial): [(mass_k + drag) phi_a phi_b + inertia_k phi_a (a_k.grad phi_b)
   // + supg_k (a_k.grad phi_a)(a_k.grad phi_b) + mu_k grad phi_a.grad phi_b] delta_de
   // + mu_k d_d phi_b d_e phi_a + lambda_k d_e phi_b d_d phi_a, and -drag phi_a phi_b to
-  // the other phase's component d; the weight folded into the coefficients, the
-  // advective derivatives computed once per point and phase
+  // the other phase's component d; the weight folded into the coefficients.
+  // On the coarse (Q1) basis the point sums are taken first, into dense arrays whose
+  // inner loops vectorise: per phase the gradient products
+  // G_c[(a, i), (b, j)] = sum_q c_q d_i phi_a d_j phi_b for c = mu_k and lambda_k, the
+  // scalar part S_k(a, b) and the drag D(a, b); they are scattered into the
+  // 2 dim n1 x 2 dim n1 matrix once per cell
   FullMatrix<double>    &coarse = local.matrices[0];
   Vector<double>        &blocks = local.vectors[0];
-  std::array<double, 27> advective_p, advective_v;
-  AssertThrow (n1 <= advective_p.size () && n2 <= advective_v.size (),
-               ExcInternalError ());
+  constexpr unsigned int max_n1 = GeometryInfo<dim>::vertices_per_cell,
+                         max_g  = max_n1 * dim;
+  AssertThrow (n1 == max_n1 && n2 <= 27, ExcInternalError ());
+  const unsigned int                                 ng = n1 * dim;
+  std::array<std::array<double, max_g * max_g>, 2>   shear{}, bulk_sum{};
+  std::array<std::array<double, max_n1 * max_n1>, 2> scalar{};
+  std::array<double, max_n1 * max_n1>                drag_sum{};
+  std::array<double, max_g>                          gradients;
+  std::array<double, max_n1>                         advective_p;
+  std::array<double, 27>                             advective_v;
   for (unsigned int q = 0; q < s.JxW.size (); ++q)
   {
-    const FlowPointCoefficients<dim> &c    = values[q];
-    const double                      w    = s.JxW[q];
-    const double                      drag = c.drag * w;
+    const FlowPointCoefficients<dim> &c     = values[q];
+    const double                      w     = s.JxW[q];
+    const double                      drag  = c.drag * w;
+    const std::vector<double>        &phi_p = s.phi_p[q];
+    for (unsigned int a = 0; a < n1; ++a)
+      for (unsigned int i = 0; i < dim; ++i)
+        gradients[a * dim + i] = s.grad_phi_p[q][a][i];
+    for (unsigned int a = 0; a < n1; ++a)
+      for (unsigned int b = 0; b < n1; ++b)
+        drag_sum[a * n1 + b] += drag * phi_p[a] * phi_p[b];
     for (unsigned int k = 0; k < 2; ++k)
     {
       const unsigned int o = k * dim, other = (1 - k) * dim;
       const double       mass = (c.mass[k] + c.drag) * w, inertia = c.inertia[k] * w,
                    supg = c.supg[k] * w, viscosity = c.viscosity[k] * w,
                    bulk = c.bulk[k] * w;
+      for (unsigned int r = 0; r < ng; ++r)
+      {
+        const double shear_r = viscosity * gradients[r], bulk_r = bulk * gradients[r];
+        double      *shear_row = &shear[k][r * ng], *bulk_row = &bulk_sum[k][r * ng];
+        for (unsigned int t = 0; t < ng; ++t)
+        {
+          shear_row[t] += shear_r * gradients[t];
+          bulk_row[t] += bulk_r * gradients[t];
+        }
+      }
       for (unsigned int a = 0; a < n1; ++a)
         advective_p[a] = c.advection[k] * s.grad_phi_p[q][a];
       for (unsigned int a = 0; a < n1; ++a)
-      {
-        const double          phi_a = s.phi_p[q][a], adv_a = advective_p[a];
-        const Tensor<1, dim> &ga = s.grad_phi_p[q][a];
         for (unsigned int b = 0; b < n1; ++b)
-        {
-          const double          phi_b = s.phi_p[q][b], adv_b = advective_p[b];
-          const Tensor<1, dim> &gb   = s.grad_phi_p[q][b];
-          const double          same = mass * phi_a * phi_b + inertia * phi_a * adv_b +
-                              supg * adv_a * adv_b + viscosity * (ga * gb);
-          for (unsigned int d = 0; d < dim; ++d)
-          {
-            const unsigned int row = (o + d) * n1 + a;
-            for (unsigned int e = 0; e < dim; ++e)
-              coarse (row, (o + e) * n1 + b) +=
-                  viscosity * gb[d] * ga[e] + bulk * gb[e] * ga[d];
-            coarse (row, (o + d) * n1 + b) += same;
-            coarse (row, (other + d) * n1 + b) -= drag * phi_a * phi_b;
-          }
-        }
-      }
+          scalar[k][a * n1 + b] += mass * phi_p[a] * phi_p[b] +
+                                   inertia * phi_p[a] * advective_p[b] +
+                                   supg * advective_p[a] * advective_p[b];
       // the node blocks: entry ((o + d, a), ((o + d + offset) mod 2 dim, a)) at
       // offset * 2 dim n2 + (o + d) n2 + a
       for (unsigned int a = 0; a < n2; ++a)
@@ -271,6 +283,30 @@ void VelocityMultigrid<dim>::local_cell (
         }
       }
     }
+  }
+  // the coarse matrix: row (o + d, a), column (o + e, b) of phase k gets
+  // G_mu[(a, e), (b, d)] + G_lambda[(a, d), (b, e)], its diagonal blocks d = e also
+  // S_k(a, b) + sum_i G_mu[(a, i), (b, i)], the other phase's block -D(a, b)
+  for (unsigned int k = 0; k < 2; ++k)
+  {
+    const unsigned int o = k * dim, other = (1 - k) * dim;
+    for (unsigned int a = 0; a < n1; ++a)
+      for (unsigned int b = 0; b < n1; ++b)
+      {
+        double same = scalar[k][a * n1 + b];
+        for (unsigned int i = 0; i < dim; ++i)
+          same += shear[k][(a * dim + i) * ng + b * dim + i];
+        for (unsigned int d = 0; d < dim; ++d)
+        {
+          const unsigned int row = (o + d) * n1 + a;
+          for (unsigned int e = 0; e < dim; ++e)
+            coarse (row, (o + e) * n1 + b) +=
+                shear[k][(a * dim + e) * ng + b * dim + d] +
+                bulk_sum[k][(a * dim + d) * ng + b * dim + e];
+          coarse (row, (o + d) * n1 + b) += same;
+          coarse (row, (other + d) * n1 + b) -= drag_sum[a * n1 + b];
+        }
+      }
   }
 }
 
