@@ -12,9 +12,10 @@
 // on the state does not compile for it) and checked lane by lane, and a registered
 // name missing from its list is reported.
 //
-// With a deal.II built without SIMD (DEAL_II_VECTORIZATION_WIDTH_IN_BITS = 0) a
-// VectorizedArray<double> has one lane; the states are packed VectorizedArray::size()
-// at a time, ordered so that neighbouring lanes sit on different branches.
+// VectorizedArray<double> has as many lanes as the build's SIMD width (8 with AVX-512
+// and WETBED_SIMD, 1 without: doc/developer_guide.md, "SIMD width"); the states are
+// packed VectorizedArray::size() at a time, ordered so that neighbouring lanes sit on
+// different branches.
 #include "test_utilities.h"
 
 #include <wetbed/closures/drag/drag_laws.h>

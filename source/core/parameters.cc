@@ -314,10 +314,9 @@ void LinearSolverParameters::declare_parameters (ParameterHandler &prm)
       "How FGMRES applies the flow system: `assembled` (the Trilinos "
       "matrix) or `matrix-free` (sum-factorised cell and face integrals "
       "of the same bilinear form, doc/theory.md \"Matrix-free flow "
-      "operator\"). `automatic`: matrix-free in 3D (with the "
-      "p-multigrid: 5.5-9.6x less wall time than assembled on the 792-cell "
-      "column, 11-16x on 6,336 cells, doc/benchmarks.md), assembled in "
-      "2D (where the assembled path is faster).");
+      "operator\"). `automatic`: matrix-free with the p-multigrid in 2D and "
+      "3D (3D column: 6.7-8.4x less wall time than assembled at 792 cells, "
+      "12.8-14.1x at 6,336; 2D beds 1.2-2.0x, doc/benchmarks.md).");
   prm.declare_entry (
       "velocity preconditioner",
       "automatic",
@@ -349,8 +348,7 @@ void LinearSolverParameters::declare_parameters (ParameterHandler &prm)
   prm.leave_subsection ();
 }
 
-void LinearSolverParameters::parse_parameters (ParameterHandler  &prm,
-                                               const unsigned int dimension)
+void LinearSolverParameters::parse_parameters (ParameterHandler &prm)
 {
   prm.enter_subsection ("linear solver");
   relative_tolerance         = prm.get_double ("relative tolerance");
@@ -368,14 +366,13 @@ void LinearSolverParameters::parse_parameters (ParameterHandler  &prm,
   verbose                    = prm.get_bool ("verbose");
   const std::string op       = prm.get ("operator");
   const std::string velocity = prm.get ("velocity preconditioner");
-  matrix_free    = op == "matrix-free" || (op == "automatic" && dimension == 3);
-  check_operator = prm.get_bool ("check operator");
-  p_multigrid    = velocity == "p-multigrid" || (velocity == "automatic" && matrix_free);
+  matrix_free                = op == "matrix-free" || op == "automatic";
+  check_operator             = prm.get_bool ("check operator");
+  p_multigrid = velocity == "p-multigrid" || (velocity == "automatic" && matrix_free);
   prm.leave_subsection ();
   require (!p_multigrid || matrix_free,
            "linear solver/velocity preconditioner",
-           "p-multigrid needs 'linear solver/operator = matrix-free' (automatic is "
-           "assembled in 2D)");
+           "p-multigrid needs 'linear solver/operator = matrix-free'");
   require (inner_solves != "exact coarse" || p_multigrid,
            "linear solver/inner solves",
            "'exact coarse' needs 'linear solver/velocity preconditioner = p-multigrid'");
@@ -523,7 +520,7 @@ void Parameters::parse_parameters (ParameterHandler &prm)
   boundary.check_wall_conditions (solids_stress.model == "kinetic theory");
   initial.parse_parameters (prm, physical.maximum_packing);
   time.parse_parameters (prm);
-  linear_solver.parse_parameters (prm, dimension);
+  linear_solver.parse_parameters (prm);
   output.parse_parameters (prm);
   checkpoint.parse_parameters (prm);
   adaptive_refinement.parse_parameters (prm, mesh.initial_refinement);

@@ -111,9 +111,9 @@ struct LinearSolverParameters
   bool         p_multigrid;    // velocity preconditioner: p-multigrid instead of ML
 
   static void declare_parameters (dealii::ParameterHandler &prm);
-  /** `operator` and `velocity preconditioner` = automatic resolved for the dimension:
-   * matrix-free with the p-multigrid in 3D, assembled with AMG in 2D. */
-  void parse_parameters (dealii::ParameterHandler &prm, unsigned int dimension);
+  /** `operator` and `velocity preconditioner` = automatic resolved: matrix-free with
+   * the p-multigrid (2D and 3D). */
+  void parse_parameters (dealii::ParameterHandler &prm);
 };
 
 /** `subsection output`. */
