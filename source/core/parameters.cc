@@ -292,16 +292,19 @@ void LinearSolverParameters::declare_parameters (ParameterHandler &prm)
                      "coarse ML's part.");
   prm.declare_entry (
       "aggregation threshold", "1e-4", Double (0, 1), "ML aggregation threshold.");
-  prm.declare_entry ("rebuild growth",
-                     "1.3",
-                     Double (1),
-                     "Rebuild the velocity AMG when Krylov iterations exceed this factor "
-                     "times those right after the last rebuild.");
+  prm.declare_entry (
+      "rebuild growth",
+      "1.3",
+      Double (1),
+      "Rebuild the velocity and Schur AMGs when Krylov iterations exceed this factor "
+      "times those right after the last rebuild.");
   prm.declare_entry (
       "rebuild interval",
       "10",
       Integer (1),
-      "Rebuild the velocity AMG at least every this many linear solves. A "
+      "Rebuild the velocity AMG (with the p-multigrid: its coarse AMG and "
+      "smoother, whose coarse matrix is assembled only for such a solve) and "
+      "the Schur AMG at least every this many linear solves. A "
       "solve with a reused hierarchy is capped at 3x the iterations right "
       "after its build; if it misses that the hierarchy is rebuilt and the "
       "solve repeated. Measured on the 3D column: 10 cuts the wall time by "

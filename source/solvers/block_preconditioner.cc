@@ -6,7 +6,8 @@ namespace wetbed
 {
 BlockPreconditioner::BlockPreconditioner (const LinearSolverParameters &parameters)
     : parameters (parameters), exact (parameters.inner_solves == "exact"),
-      exact_velocity (exact || parameters.inner_solves == "exact velocity")
+      exact_velocity (exact || parameters.inner_solves == "exact velocity"),
+      schur_preconditioner (exact)
 {
 }
 
@@ -25,9 +26,14 @@ void BlockPreconditioner::update (const FlowOperator &op, const bool rebuild_vel
                             "operator, not '" +
                             op.name () + "'");
   gradient = &assembled->gradient_block ();
+  schur    = &assembled->schur_block ();
   if (rebuild_velocity)
     build_velocity (assembled->velocity_block (), modes, dofs_per_node);
-  build_schur (assembled->schur_block ());
+  if (rebuild_velocity || !schur_preconditioner.built ())
+  {
+    schur_preconditioner.build (*schur);
+    ++schur_builds;
+  }
 }
 
 void BlockPreconditioner::build_velocity (
@@ -74,29 +80,10 @@ void BlockPreconditioner::build_velocity (
   ++velocity_builds;
 }
 
-void BlockPreconditioner::build_schur (const dealii::TrilinosWrappers::SparseMatrix &L)
-{
-  dealii::TrilinosWrappers::PreconditionAMG::AdditionalData data;
-  data.elliptic        = true;
-  data.smoother_sweeps = 2;
-  schur_amg.initialize (L, data);
-  schur = &L;
-  ++schur_builds;
-}
-
 void BlockPreconditioner::vmult (BlockVector &dst, const BlockVector &src) const
 {
   // pressure: y_p = -L_c^{-1} r_p
-  if (exact)
-  {
-    dealii::SolverControl control (10000, 1e-10 * src.block (1).l2_norm () + 1e-300);
-    dealii::TrilinosWrappers::SolverCG cg (control);
-    dst.block (1) = 0;
-    cg.solve (*schur, dst.block (1), src.block (1), schur_amg);
-  }
-  else
-    schur_amg.vmult (dst.block (1), src.block (1));
-  dst.block (1) *= -1.0;
+  schur_preconditioner.vmult (dst.block (1), src.block (1), *schur);
   // velocity: y_u = A^{-1}(r_u - B^T y_p)
   gradient->vmult (velocity_tmp, dst.block (1));
   velocity_tmp.sadd (-1.0, src.block (0));

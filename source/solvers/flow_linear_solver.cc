@@ -16,13 +16,21 @@ FlowLinearSolver::FlowLinearSolver (const LinearSolverParameters &parameters,
 {
 }
 
-unsigned int FlowLinearSolver::solve (const FlowOperator &op,
-                                      const FlowOperator &preconditioner_source,
-                                      FlowPreconditioner &preconditioner,
-                                      const BlockVector  &rhs,
-                                      BlockVector        &solution,
-                                      const double        dt,
-                                      SolveHistory       &history)
+bool FlowLinearSolver::rebuild_due (const double dt) const
+{
+  return solves_since_build >= parameters.rebuild_interval ||
+         std::abs (dt / dt_at_build - 1.0) > 0.2;
+}
+
+unsigned int
+FlowLinearSolver::solve (const FlowOperator           &op,
+                         const FlowOperator           &preconditioner_source,
+                         FlowPreconditioner           &preconditioner,
+                         const BlockVector            &rhs,
+                         BlockVector                  &solution,
+                         const double                  dt,
+                         SolveHistory                 &history,
+                         const std::function<void ()> &before_unforeseen_rebuild)
 {
   const auto &ls               = parameters;
   auto        rebuild_velocity = [&] ()
@@ -34,8 +42,7 @@ unsigned int FlowLinearSolver::solve (const FlowOperator &op,
   };
   {
     TimerOutput::Scope scope (timer, "preconditioner setup");
-    if (solves_since_build >= ls.rebuild_interval ||
-        std::abs (dt / dt_at_build - 1.0) > 0.2)
+    if (rebuild_due (dt))
       rebuild_velocity ();
     else
       preconditioner.update (preconditioner_source, false);
@@ -68,6 +75,8 @@ unsigned int FlowLinearSolver::solve (const FlowOperator &op,
       spent += control.last_step ();
       if (reused)
       {
+        if (before_unforeseen_rebuild)
+          before_unforeseen_rebuild ();
         TimerOutput::Scope setup (timer, "preconditioner setup");
         rebuild_velocity ();
         continue;

@@ -157,8 +157,10 @@ void FlowSystem<dim>::set_assembler (std::unique_ptr<FlowAssembler<dim>> new_ass
 template <int dim>
 void FlowSystem<dim>::assemble (const FlowAssemblyState<dim>    &state,
                                 const AffineConstraints<double> &flow_constraints,
-                                const AffineConstraints<double> &schur_constraints)
+                                const AffineConstraints<double> &schur_constraints,
+                                const bool                       with_coarse_matrix)
 {
+  last_assembly = {state, &flow_constraints, &schur_constraints};
   TimerOutput::Scope scope (timer, "flow assembly");
   // the linearisation point (copies of ghosted vectors: the ghost values come along)
   assembled_alpha = *state.alpha;
@@ -175,7 +177,8 @@ void FlowSystem<dim>::assemble (const FlowAssemblyState<dim>    &state,
     sinks.push_back (&matrix_free_op);
     if (parameters.linear_solver.p_multigrid)
     {
-      multigrid.begin_update ();
+      // the coarse matrix only for a pass whose solve rebuilds the coarse AMG
+      multigrid.begin_update (with_coarse_matrix || linear_solver.rebuild_due (state.dt));
       sinks.push_back (&multigrid);
     }
   }
@@ -265,6 +268,16 @@ unsigned int FlowSystem<dim>::solve (BlockVector                     &solution,
   BlockVector owned_solution (owned, communicator);
   owned_solution = solution; // the lagged iterate as the initial guess
   flow_constraints.set_zero (owned_solution);
+  // a rebuild after a failed reused solve needs the coarse matrix of this
+  // linearisation, which the assembly left out: the same assembly once more with it
+  const auto with_coarse_matrix = [&] ()
+  {
+    if (!multigrid.coarse_matrix_current ())
+      assemble (last_assembly.state,
+                *last_assembly.flow_constraints,
+                *last_assembly.schur_constraints,
+                true);
+  };
   const unsigned int iterations = parameters.linear_solver.p_multigrid
                                       ? linear_solver.solve (krylov_operator (),
                                                              matrix_free_op,
@@ -272,7 +285,8 @@ unsigned int FlowSystem<dim>::solve (BlockVector                     &solution,
                                                              rhs,
                                                              owned_solution,
                                                              dt,
-                                                             history)
+                                                             history,
+                                                             with_coarse_matrix)
                                       : linear_solver.solve (krylov_operator (),
                                                              op,
                                                              *preconditioner,

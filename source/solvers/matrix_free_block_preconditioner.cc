@@ -15,7 +15,8 @@ MatrixFreeBlockPreconditioner<dim>::MatrixFreeBlockPreconditioner (
     VelocityMultigrid<dim>       &multigrid)
     : exact_schur (parameters.inner_solves == "exact"),
       exact_velocity (exact_schur || parameters.inner_solves == "exact velocity"),
-      schur_source (schur_source), multigrid (multigrid)
+      schur_source (schur_source), multigrid (multigrid),
+      schur_preconditioner (exact_schur)
 {
 }
 
@@ -36,10 +37,8 @@ void MatrixFreeBlockPreconditioner<dim>::update (const FlowOperator &flow_operat
   }
   if (rebuild_velocity)
     multigrid.rebuild ();
-  dealii::TrilinosWrappers::PreconditionAMG::AdditionalData data;
-  data.elliptic        = true;
-  data.smoother_sweeps = 2;
-  schur_amg.initialize (schur_source.schur_block (), data);
+  if (rebuild_velocity || !schur_preconditioner.built ())
+    schur_preconditioner.build (schur_source.schur_block ());
 }
 
 template <int dim>
@@ -47,16 +46,7 @@ void MatrixFreeBlockPreconditioner<dim>::vmult (BlockVector       &dst,
                                                 const BlockVector &src) const
 {
   // pressure: y_p = -L_c^{-1} r_p
-  if (exact_schur)
-  {
-    dealii::SolverControl control (10000, 1e-10 * src.block (1).l2_norm () + 1e-300);
-    dealii::TrilinosWrappers::SolverCG cg (control);
-    dst.block (1) = 0;
-    cg.solve (schur_source.schur_block (), dst.block (1), src.block (1), schur_amg);
-  }
-  else
-    schur_amg.vmult (dst.block (1), src.block (1));
-  dst.block (1) *= -1.0;
+  schur_preconditioner.vmult (dst.block (1), src.block (1), schur_source.schur_block ());
   // velocity: y_u = MG(r_u - B^T y_p), the constrained rows zero inside
   op->vmult_gradient (gradient, dst.block (1));
   op->to_velocity (rhs, src.block (0));

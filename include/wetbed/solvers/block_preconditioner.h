@@ -2,6 +2,7 @@
 
 #include <wetbed/core/parameters.h>
 #include <wetbed/solvers/assembled_flow_operator.h>
+#include <wetbed/solvers/schur_preconditioner.h>
 
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_block_sparse_matrix.h>
@@ -34,8 +35,9 @@ public:
   /** The near-null space of the velocity block on this mesh (see build_velocity). */
   void set_near_null_space (std::vector<std::vector<double>> modes,
                             unsigned int                     dofs_per_node);
-  /** From an AssembledFlowOperator (the only operator it is made for): the Schur
-   * hierarchy always, the velocity hierarchy with `rebuild_velocity`. */
+  /** From an AssembledFlowOperator (the only operator it is made for): the velocity
+   * and Schur hierarchies with `rebuild_velocity` (the Schur one also when it has none
+   * yet); otherwise the last ones are reused. */
   void update (const FlowOperator &op, bool rebuild_velocity) override;
 
   /** Builds (or rebuilds) the velocity hierarchy from the current A with the given
@@ -46,8 +48,6 @@ public:
   void build_velocity (const dealii::TrilinosWrappers::SparseMatrix &velocity_matrix,
                        const std::vector<std::vector<double>>       &near_null_space,
                        unsigned int                                  dofs_per_node);
-  /** Builds the Schur hierarchy from L_c. */
-  void build_schur (const dealii::TrilinosWrappers::SparseMatrix &schur_matrix);
 
   void vmult (BlockVector &dst, const BlockVector &src) const override;
 
@@ -55,7 +55,7 @@ public:
 
 private:
   const LinearSolverParameters                 &parameters;
-  dealii::TrilinosWrappers::PreconditionAMG     velocity_amg, schur_amg;
+  dealii::TrilinosWrappers::PreconditionAMG     velocity_amg;
   const dealii::TrilinosWrappers::SparseMatrix *gradient = nullptr;
   const dealii::TrilinosWrappers::SparseMatrix *schur    = nullptr;
   bool                                          exact    = false;
@@ -65,6 +65,7 @@ private:
   mutable dealii::TrilinosWrappers::MPI::Vector                   velocity_tmp;
   std::unique_ptr<Epetra_MultiVector> null_space; // ML keeps a pointer to its values
   std::vector<std::vector<double>>    modes;
+  SchurPreconditioner                 schur_preconditioner;
   unsigned int                        dofs_per_node = 1;
 };
 } // namespace wetbed

@@ -8,6 +8,7 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/lac/affine_constraints.h>
 
+#include <functional>
 #include <limits>
 
 namespace wetbed
@@ -32,19 +33,26 @@ public:
   /** Rebuild everything at the next solve (after a mesh change). */
   void reset () { solves_since_build = std::numeric_limits<unsigned int>::max () / 2; }
 
+  /** Whether the next solve (at step dt) rebuilds the velocity part by the policy;
+   * a reused solve that fails rebuilds it too, which no one can foresee. */
+  bool rebuild_due (double dt) const;
+
   /** Solves A x = rhs with `op` as A and the preconditioner updated from
    * `preconditioner_source` (the operator it is made for: the same, or the assembled
    * matrix beside a matrix-free A); `solution` holds the initial guess on entry (owned
    * layout, constrained entries zero) and the solution on exit (constraints not
    * distributed). Returns the iterations, or invalid_unsigned_int when the solve failed
-   * with a fresh preconditioner (the step is then rejected). */
-  unsigned int solve (const FlowOperator &op,
-                      const FlowOperator &preconditioner_source,
-                      FlowPreconditioner &preconditioner,
-                      const BlockVector  &rhs,
-                      BlockVector        &solution,
-                      double              dt,
-                      SolveHistory       &history);
+   * with a fresh preconditioner (the step is then rejected). `before_unforeseen_rebuild`
+   * (if set) runs before the rebuild that follows a failed reused solve, which
+   * rebuild_due() could not announce. */
+  unsigned int solve (const FlowOperator           &op,
+                      const FlowOperator           &preconditioner_source,
+                      FlowPreconditioner           &preconditioner,
+                      const BlockVector            &rhs,
+                      BlockVector                  &solution,
+                      double                        dt,
+                      SolveHistory                 &history,
+                      const std::function<void ()> &before_unforeseen_rebuild = {});
 
 private:
   const LinearSolverParameters &parameters;

@@ -60,10 +60,12 @@ public:
   bool has_assembler () const { return static_cast<bool> (assembler); }
 
   /** The system linearised about `state` (its flow iterate and alpha_s), and that
-   * linearisation point kept. */
+   * linearisation point kept. The p-multigrid's coarse matrix is assembled when the
+   * next solve rebuilds the coarse AMG, or with `with_coarse_matrix`. */
   void assemble (const FlowAssemblyState<dim>            &state,
                  const dealii::AffineConstraints<double> &flow_constraints,
-                 const dealii::AffineConstraints<double> &schur_constraints);
+                 const dealii::AffineConstraints<double> &schur_constraints,
+                 bool                                     with_coarse_matrix = false);
 
   /** Solves the last assembled system from `solution` (ghosted: the lagged iterate
    * on entry, the new one with constraints distributed on exit); the iterations, or
@@ -137,8 +139,16 @@ private:
   BlockVector                                         rhs;
   std::unique_ptr<BlockPreconditioner>                preconditioner;
   FlowLinearSolver                                    linear_solver;
-  AlphaVector                                         assembled_alpha;
-  BlockVector                                         assembled_flow;
+  // the last assembly's arguments (for the coarse matrix that a rebuild after a
+  // failed reused solve needs)
+  struct
+  {
+    FlowAssemblyState<dim>                   state{};
+    const dealii::AffineConstraints<double> *flow_constraints  = nullptr;
+    const dealii::AffineConstraints<double> *schur_constraints = nullptr;
+  } last_assembly;
+  AlphaVector assembled_alpha;
+  BlockVector assembled_flow;
   // the velocity DoFs of the inlet, the walls and the outlet, and the weighted
   // unconstrained rows of the cells that hold them in the last assembly
   std::array<dealii::IndexSet, 3> boundary_velocity_dofs;

@@ -3,6 +3,7 @@
 #include <wetbed/core/parameters.h>
 #include <wetbed/solvers/assembled_flow_operator.h>
 #include <wetbed/solvers/matrix_free_flow_operator.h>
+#include <wetbed/solvers/schur_preconditioner.h>
 #include <wetbed/solvers/velocity_multigrid.h>
 
 #include <deal.II/lac/trilinos_precondition.h>
@@ -33,8 +34,9 @@ public:
                                  const AssembledFlowOperator  &schur_source,
                                  VelocityMultigrid<dim>       &multigrid);
 
-  /** From a MatrixFreeFlowOperator: the Schur hierarchy always, the velocity
-   * multigrid's coarse AMG and smoother with `rebuild_velocity`. */
+  /** From a MatrixFreeFlowOperator: the velocity multigrid's coarse AMG and smoother
+   * and the Schur hierarchy with `rebuild_velocity` (the Schur one also when it has
+   * none yet); otherwise the last ones are reused with the new node blocks. */
   void update (const FlowOperator &op, bool rebuild_velocity) override;
   void vmult (BlockVector &dst, const BlockVector &src) const override;
   /** With exact inner solves: the inner velocity GMRES iterations since the last
@@ -44,12 +46,12 @@ public:
 private:
   void solve_velocity (LocalVector &dst, const LocalVector &src) const;
 
-  const bool                                exact_schur, exact_velocity;
-  const AssembledFlowOperator              &schur_source;
-  VelocityMultigrid<dim>                   &multigrid;
-  const MatrixFreeFlowOperator<dim>        *op = nullptr;
-  dealii::TrilinosWrappers::PreconditionAMG schur_amg;
-  mutable LocalVector                       gradient, rhs, solution;
-  mutable unsigned int                      inner_iterations = 0, inner_solves = 0;
+  const bool                         exact_schur, exact_velocity;
+  const AssembledFlowOperator       &schur_source;
+  VelocityMultigrid<dim>            &multigrid;
+  const MatrixFreeFlowOperator<dim> *op = nullptr;
+  SchurPreconditioner                schur_preconditioner;
+  mutable LocalVector                gradient, rhs, solution;
+  mutable unsigned int               inner_iterations = 0, inner_solves = 0;
 };
 } // namespace wetbed

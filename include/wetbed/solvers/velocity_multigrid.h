@@ -47,9 +47,14 @@ public:
    * the coarse sparsity, the transfer, the node pairs of the block Jacobi. */
   void reinit (const MatrixFreeFlowOperator<dim> &op);
 
-  /** The coarse matrix and the Q2 diagonal blocks for new coefficients: begin, then the
-   * flow assembly's pass with this sink, then end (the node blocks inverted). */
-  void begin_update ();
+  /** The Q2 node blocks, and with `with_coarse_matrix` the coarse matrix, for new
+   * coefficients: begin, then the flow assembly's pass with this sink, then end (the
+   * node blocks inverted). The coarse matrix is only read by the coarse AMG's build
+   * (rebuild()), which keeps seeing the matrix it was built from until the next one:
+   * passes that precede no rebuild leave it out. */
+  void begin_update (bool with_coarse_matrix);
+  /** Whether the last update assembled the coarse matrix (what rebuild() needs). */
+  bool coarse_matrix_current () const { return coarse_current; }
   /** The cell's part of the coarse matrix (matrices[0], its Q1 DoFs in
    * local_dof_indices[0]) and of the node blocks (vectors[0], its Q2 DoFs in
    * local_dof_indices[1]). */
@@ -114,7 +119,9 @@ private:
 
   const LinearSolverParameters                &parameters;
   const bool                                   exact_coarse;
-  const MatrixFreeFlowOperator<dim>           *op = nullptr;
+  bool                                         coarse_pending = false; // in this update
+  bool                                         coarse_current = false; // after it
+  const MatrixFreeFlowOperator<dim>           *op             = nullptr;
   dealii::FESystem<dim>                        coarse_fe;
   dealii::FE_Q<dim>                            fine_scalar;
   dealii::DoFHandler<dim>                      coarse_dofs;
