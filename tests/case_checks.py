@@ -4,7 +4,7 @@
 usage: case_checks.py CHECK WETBED SOURCE_DIR WORK_DIR
 CHECK: ergun | split_inlet | wall_groups | hydrostatic | packed | settling | ramp | kinetic | ranks |
        monitor_interval | signals | disk_full | bubbling | hdf5 | restart | amr | failure | bubbles |
-       matrix_free
+       matrix_free | divergence
 """
 import csv
 import math
@@ -732,6 +732,46 @@ elif check == "failure":
            "the last good state was written (checkpoint and fields)")
     rows = run("bubbling_bed_2d", "subsection time stepping\n set end time = 2e-3\nend\n", 1, folder, resume=True)
     expect(rows[-1]["time"] >= 2e-3 - 1e-12, "the corrected case resumes from the checkpoint and finishes")
+elif check == "divergence":
+    # issue 55: a step must also be physically sane. Each check is injected by a
+    # threshold the normal start-up of the quick-start bed exceeds (retries = 0: the
+    # first failed check stops the run): status 3, failure_report.txt naming the check
+    # (and, for the speed checks, the cells), the last good state written
+    base = ("subsection time stepping\n set end time = 0.05\nend\n"
+            "subsection divergence checks\n set retries = 0\n")
+    injected = {
+        "speed": (base + " set speed limit factor = 0.3\nend\n",
+                  "speed check: |u_g| = ", "m/s; the fastest:"),
+        "fluidization": (base + " set fluidization index limit = 1e-3\nend\n",
+                         "fluidization index check: FI = ", "fluidization index limit = 0.001"),
+        # a speed scale of 1 cm/s: the bed starting to move doubles the kinetic energy
+        "energy": (base + " set reference speed = 0.01\n set speed limit factor = 1e9\n"
+                   " set energy growth factor = 2\nend\n",
+                   "kinetic energy check: ", "energy growth factor = 2"),
+        # the Courant limit of the first step's speeds is below the smallest step allowed
+        "courant": ("subsection time stepping\n set end time = 0.05\n set cfl target = 1e-3\n"
+                    " set initial time step = 1e-4\n set minimum time step = 1e-4\nend\n",
+                    "the Courant limit ", "fell below time stepping/minimum time step"),
+    }
+    for name, (overrides, cause, detail) in injected.items():
+        folder = os.path.join(work, "divergence_" + name)
+        run("quick_start_2d", overrides, 1, folder, expected_exit=3)
+        report = os.path.join(folder, "failure_report.txt")
+        text = open(report).read() if os.path.isfile(report) else ""
+        print(text[:1500])
+        expect(cause in text and detail in text, f"{name}: the report names the check ({cause.strip()})")
+        expect(("diagnosis in" in run.stderr + run.stdout) and "last good state" in run.stderr + run.stdout,
+               f"{name}: the one-line error points at the report and the last good state")
+        expect(os.path.isfile(os.path.join(folder, "checkpoint", "state")),
+               f"{name}: the last good state was written as a checkpoint")
+        if name == "speed":
+            cells = re.findall(r"\|u_[gs]\| = ([0-9.e+-]+) m/s in the cell at \(", text)
+            expect(len(cells) >= 1 and all(float(c) > 0 for c in cells),
+                   f"speed: the report lists the worst cells ({len(cells)})")
+    # the defaults leave the normal start-up alone
+    rows = run("quick_start_2d", "subsection time stepping\n set end time = 0.05\nend\n", 1,
+               os.path.join(work, "divergence_none"))
+    expect(rows[-1]["time"] >= 0.05 - 1e-12, "with the default checks the start-up runs to its end")
 else:
     sys.exit(f"unknown check {check}")
 

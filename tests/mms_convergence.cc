@@ -321,11 +321,12 @@ private:
     Tensor<1, dim>       r    = inertia_k * rho_k * (dudt + g * u) -
                        (gas ? s.div_tau_g : s.div_tau_s) + alpha_k * s.grad_p;
     // the conservative form's rho_k div(alpha_k u_k) u_k (steady: the time parts vanish)
-    if (parameters.conservative_momentum)
+    if (parameters.continuity_weight () > 0)
     {
       const double slope =
           gas ? -1.0 : (s.alpha > pp.residual_solids_fraction ? 1.0 : 0.0);
-      r += rho_k * (inertia_k * trace (g) + slope * (s.grad_alpha * u)) * u;
+      r += parameters.continuity_weight () * rho_k *
+           (inertia_k * trace (g) + slope * (s.grad_alpha * u)) * u;
     }
     if (gas)
       r += beta * (s.ug - s.us);

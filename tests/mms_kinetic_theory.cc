@@ -253,14 +253,14 @@ private:
   // the conservative form's rho_k div(alpha_k u_k) u_k (steady: the time parts vanish)
   Tensor<1, dim> continuity_term (const State &s, const unsigned int k) const
   {
-    if (!parameters.conservative_momentum)
+    if (parameters.continuity_weight () == 0)
       return Tensor<1, dim> ();
     const double fraction = k == 0 ? 1 - s.alpha : s.alpha;
     const double density =
         k == 0 ? parameters.physical.gas_density : parameters.physical.particle_density;
     const double divergence = fraction * dealii::trace (s.grad_u[k]) +
                               (k == 0 ? -1.0 : 1.0) * (s.grad_alpha * s.u[k]);
-    return density * divergence * s.u[k];
+    return parameters.continuity_weight () * density * divergence * s.u[k];
   }
 
   State state (const Point<dim> &x) const

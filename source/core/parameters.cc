@@ -480,7 +480,7 @@ void Parameters::declare_parameters (ParameterHandler &prm)
   prm.declare_entry (
       "form",
       "conservative",
-      Selection ("conservative|advective"),
+      Selection ("conservative|advective|skew-symmetric"),
       "conservative: d(alpha_k rho_k u_k)/dt + div(alpha_k rho_k u_k u_k), the time "
       "derivative with each level's own volume fraction and the convection plus "
       "rho_k div(alpha_k u_k) u_k (implicit where it adds mass, lagged where it removes "
@@ -498,7 +498,15 @@ void Parameters::declare_parameters (ParameterHandler &prm)
   AdaptiveRefinementParameters::declare_parameters (prm);
   BubbleAnalysisParameters::declare_parameters (prm);
   SpectrumParameters::declare_parameters (prm);
+  DivergenceCheckParameters::declare_parameters (prm);
   BedMonitorParameters::declare_parameters (prm);
+}
+
+double Parameters::continuity_weight () const
+{
+  return momentum_form == MomentumForm::conservative     ? 1.0
+         : momentum_form == MomentumForm::skew_symmetric ? 0.5
+                                                         : 0.0;
 }
 
 void Parameters::parse_parameters (ParameterHandler &prm)
@@ -517,7 +525,10 @@ void Parameters::parse_parameters (ParameterHandler &prm)
   stabilization = prm.get_bool ("enabled");
   prm.leave_subsection ();
   prm.enter_subsection ("momentum equations");
-  conservative_momentum = prm.get ("form") == "conservative";
+  const std::string form = prm.get ("form");
+  momentum_form          = form == "conservative" ? MomentumForm::conservative
+                           : form == "advective"  ? MomentumForm::advective
+                                                  : MomentumForm::skew_symmetric;
   prm.leave_subsection ();
   boundary.parse_parameters (prm);
   boundary.check_wall_conditions (solids_stress.model == "kinetic theory");
@@ -529,6 +540,7 @@ void Parameters::parse_parameters (ParameterHandler &prm)
   adaptive_refinement.parse_parameters (prm, mesh.initial_refinement);
   bubble_analysis.parse_parameters (prm);
   spectrum.parse_parameters (prm);
+  divergence_checks.parse_parameters (prm);
   bed_monitors.parse_parameters (prm, dimension);
   boundary.check_time_span (time.end_time);
   collect_domain_checks ();

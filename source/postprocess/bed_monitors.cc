@@ -1,6 +1,7 @@
 #include <wetbed/postprocess/bed_monitors.h>
 #include <wetbed/postprocess/bed_profile.h>
 #include <wetbed/postprocess/momentum_budget.h>
+#include <wetbed/postprocess/pressure_drop.h>
 #include <wetbed/postprocess/wall_forces.h>
 
 #include <deal.II/base/mpi.h>
@@ -38,44 +39,15 @@ MonitorRow evaluate_monitors (const SolverState<dim> &s)
   row.krylov         = s.krylov_iterations;
   row.rejected       = s.rejected_steps;
 
-  const QGauss<dim - 1> face_quadrature (3);
-  FEFaceValues<dim>     face_values (
-      s.mapping, s.flow_fe, face_quadrature, update_values | update_JxW_values);
-  const FEValuesExtractors::Scalar pressure (2 * dim);
-  std::vector<double>              p (face_quadrature.size ());
-  double inlet_integral = 0, inlet_area = 0, outlet_integral = 0, outlet_area = 0;
-  for (const auto &cell : s.flow_dof_handler.active_cell_iterators ())
-    if (cell->is_locally_owned ())
-      for (const auto &face : cell->face_iterators ())
-        if (face->at_boundary () &&
-            (s.boundaries.is (face->boundary_id (), BoundaryType::inlet) ||
-             s.boundaries.is (face->boundary_id (), BoundaryType::outlet)))
-        {
-          face_values.reinit (cell, face);
-          face_values[pressure].get_function_values (s.flow_solution, p);
-          const bool inlet = s.boundaries.is (face->boundary_id (), BoundaryType::inlet);
-          for (unsigned int q = 0; q < face_quadrature.size (); ++q)
-          {
-            (inlet ? inlet_integral : outlet_integral) += p[q] * face_values.JxW (q);
-            (inlet ? inlet_area : outlet_area) += face_values.JxW (q);
-          }
-        }
-  inlet_integral  = Utilities::MPI::sum (inlet_integral, s.communicator);
-  inlet_area      = Utilities::MPI::sum (inlet_area, s.communicator);
-  outlet_integral = Utilities::MPI::sum (outlet_integral, s.communicator);
-  outlet_area     = Utilities::MPI::sum (outlet_area, s.communicator);
-  // a closed or periodic domain has no inlet or outlet: no pressure drop, no FI
-  row.pressure_drop = inlet_area > 0 && outlet_area > 0
-                          ? inlet_integral / inlet_area - outlet_integral / outlet_area
-                          : 0.0;
-
   const auto &pp  = s.parameters.physical;
   row.solids_mass = s.solids_mass (s.alpha);
   row.mass_drift =
       s.initial_solids_mass > 0 ? row.solids_mass / s.initial_solids_mass - 1 : 0;
+  const PressureDrop drop = evaluate_pressure_drop (s, row.solids_mass);
+  row.pressure_drop       = drop.pressure_drop;
+  row.fluidization        = drop.fluidization;
   const double weight =
       row.solids_mass * (1 - pp.gas_density / pp.particle_density) * pp.gravity.norm ();
-  row.fluidization = weight > 0 ? row.pressure_drop * inlet_area / weight : 0;
   if (weight > 0)
   {
     const WallForces forces      = evaluate_wall_forces (s);

@@ -16,12 +16,17 @@
  *                             + alpha_k* rho_k (u_k* . grad) u_k^{n+1},
  *   conservative form:  A_k = rho_k (alpha* u^{n+1} - alpha^n u^n)/dt
  *                             + alpha_k* rho_k (u_k* . grad) u_k^{n+1}
- *                             + rho_k (max(D_k, 0) u^{n+1} + min(D_k, 0) u*).
- * The conservative momentum change C_k = rho_k (alpha^{n+1} u^{n+1} - alpha^n u^n)/dt
+ *                             + rho_k (max(D_k, 0) u^{n+1} + min(D_k, 0) u*),
+ *   skew-symmetric:     A_k = rho_k ((alpha* + alpha^n)/2 u^{n+1} - alpha^n u^n)/dt
+ *                             + alpha_k* rho_k (u_k* . grad) u_k^{n+1} + rho_k D_k
+ * u^{n+1}/2. The conservative momentum change C_k = rho_k (alpha^{n+1} u^{n+1} - alpha^n
+ * u^n)/dt
  * + div(alpha_k* rho_k u_k* u_k^{n+1}) differs from A_k by
  *   advective:     rho_k [((alpha^{n+1} - alpha*) u^{n+1} + (alpha* - alpha^n) u^n)/dt
  *                         + D_k u^{n+1}],
  *   conservative:  rho_k [(alpha^{n+1} - alpha*) u^{n+1}/dt + min(D_k, 0)(u^{n+1} - u*)],
+ *   skew-symmetric: rho_k [(alpha^{n+1} - alpha*) u^{n+1}/dt
+ *                          + ((alpha* - alpha^n)/dt + D_k) u^{n+1}/2],
  * the velocity times the continuity residual of the volume fractions the flow solve saw
  * and the velocities it produced: large in the advective form (the alpha_s transport
  * conserves the solids mass in its own space, but the residual tested with the vertical
@@ -69,7 +74,7 @@ InertialBudget evaluate_inertial_budget (const SolverState<dim> &s)
   std::vector<Tensor<1, dim>> grad_a_lag (n_q), u_new (n_q), u_old (n_q), u_lag (n_q),
       u_face (face_quadrature.size ());
   std::vector<Tensor<2, dim>> grad_u_lag (n_q);
-  const bool                  conservative = s.parameters.conservative_momentum;
+  const MomentumForm          form = s.parameters.momentum_form;
 
   const double residual = pp.residual_solids_fraction;
   auto         fraction = [&] (const unsigned int k, const double alpha_s)
@@ -108,11 +113,14 @@ InertialBudget evaluate_inertial_budget (const SolverState<dim> &s)
           const double u_up = u_new[q] * up;
           // C - A, A the assembled form (see above)
           double defect = (fraction_new - fraction_lag) * u_up / dt;
-          if (conservative)
+          if (form == MomentumForm::conservative)
             defect += std::min (divergence, 0.0) * (u_new[q] - u_lag[q]) * up;
-          else
+          else if (form == MomentumForm::advective)
             defect +=
                 (fraction_lag - fraction_old) * (u_old[q] * up) / dt + divergence * u_up;
+          else
+            defect +=
+                0.5 * ((fraction_lag - fraction_old) * u_up / dt + divergence * u_up);
           budget.momentum += density[k] * fraction_new * u_up * JxW;
           if (dt > 0)
             budget.continuity_defect += density[k] * defect * JxW;

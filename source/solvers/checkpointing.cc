@@ -63,7 +63,7 @@ bool resume_may_change (const std::string &name)
                                                        "output/progress interval",
                                                        "mesh/wall face weight"};
   static const std::vector<std::string> subsections = {
-      "checkpoint/", "linear solver/", "spectrum/"};
+      "checkpoint/", "linear solver/", "spectrum/", "divergence checks/"};
   if (std::find (names.begin (), names.end (), name) != names.end ())
     return true;
   for (const std::string &s : subsections)
@@ -162,7 +162,8 @@ void check_identity (const CheckpointState &state,
              name + " = '" + value + "', the checkpoint's run had '" +
                  (it == saved.end () ? std::string ("no such parameter") : it->second) +
                  "' (on resume only the end time, time-step limits, output, "
-                 "checkpoint, linear solver and spectrum settings may change)");
+                 "checkpoint, linear solver, spectrum and divergence check settings "
+                 "may change)");
   }
   // monitors.csv and the bubble files: resume cuts them back, so each must still begin
   // with what the checkpoint's run had written

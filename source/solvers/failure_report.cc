@@ -45,7 +45,8 @@ at (const std::array<double, 4> &e, const unsigned int dim, const std::string &u
 } // namespace
 
 template <int dim>
-std::string TwoFluidSolver<dim>::describe_failed_state (const double dt) const
+std::string TwoFluidSolver<dim>::describe_failed_state (const double       dt,
+                                                        const std::string &where) const
 {
   const double          big = std::numeric_limits<double>::max ();
   std::array<double, 4> alpha_lo{{big, 0, 0, 0}}, alpha_hi{{-big, 0, 0, 0}},
@@ -103,7 +104,7 @@ std::string TwoFluidSolver<dim>::describe_failed_state (const double dt) const
          << " s (time stepping/minimum time step = " << parameters.time.minimum_time_step
          << " s)\n"
          << "cause of the last rejection: " << rejection_reason << "\n"
-         << "in the state that failed:\n"
+         << where << "in the state that failed:\n"
          << "  alpha_s min " << at (global_extreme (alpha_lo, -1, communicator), dim)
          << "\n  alpha_s max " << at (worst_alpha, dim) << " (maximum packing "
          << parameters.physical.maximum_packing << ")\n"
@@ -125,11 +126,14 @@ std::string TwoFluidSolver<dim>::describe_failed_state (const double dt) const
            << stress.wet_viscosity << " Pa s\n";
   }
   report << solve_history.describe ();
-  report << "the last accepted state is in checkpoint/ (resume with --resume after "
-            "changing the case) and in the last field output\n";
+  report << "the last accepted state (t = " << time << " s, step " << step_number
+         << ") is in checkpoint/ (resume with --resume after changing the case) and in "
+            "the last field output\n";
   return report.str ();
 }
 
-template std::string TwoFluidSolver<2>::describe_failed_state (double) const;
-template std::string TwoFluidSolver<3>::describe_failed_state (double) const;
+template std::string TwoFluidSolver<2>::describe_failed_state (double,
+                                                               const std::string &) const;
+template std::string TwoFluidSolver<3>::describe_failed_state (double,
+                                                               const std::string &) const;
 } // namespace wetbed

@@ -5,6 +5,7 @@
 #include <wetbed/solvers/wave_speeds.h>
 
 #include <fstream>
+#include <functional>
 #include <sstream>
 
 #include <deal.II/base/function.h>
@@ -55,7 +56,8 @@ TwoFluidSolver<dim>::TwoFluidSolver (const Parameters &parameters, MPI_Comm comm
                          gas_particle,
                          parameters.physical.residual_solids_fraction),
       solids_transport (parameters, communicator, timer),
-      time_step_controller (parameters.time), mesh_adaptation (parameters),
+      time_step_controller (parameters.time), divergence_checks (this->parameters),
+      mesh_adaptation (parameters),
       checkpointing (parameters, communicator, pcout, timer),
       field_output (parameters, timer), time (0),
       time_step (parameters.time.initial_time_step), previous_time_step (0),
@@ -536,8 +538,16 @@ void TwoFluidSolver<dim>::advance ()
   double      dt = std::min (time_step, ts.end_time - time);
   // save the state to retry from
   const BlockVector saved_flow (flow_solution);
-  unsigned int      order = (step_number == 0) ? 1 : ts.bdf_order;
+  unsigned int      order         = (step_number == 0) ? 1 : ts.bdf_order;
+  unsigned int      failed_checks = 0; // rejections by a divergence check in a row
+  const auto        restore       = [&] ()
+  {
+    flow_solution = saved_flow;
+    alpha         = alpha_old;
+    theta         = theta_old;
+  };
   solve_history.clear ();
+  typename DivergenceChecks<dim>::Result checked;
   while (true)
   {
     solve_history.begin_attempt (dt, order);
@@ -549,9 +559,7 @@ void TwoFluidSolver<dim>::advance ()
     catch (const StepInterrupted &)
     {
       // back to the last accepted step, which the run checkpoints
-      flow_solution = saved_flow;
-      alpha         = alpha_old;
-      theta         = theta_old;
+      restore ();
       throw;
     }
     catch (const SolverControl::NoConvergence &failure)
@@ -562,6 +570,19 @@ void TwoFluidSolver<dim>::advance ()
       rejection_reason = reason.str ();
       accepted         = false;
     }
+    checked = {};
+    if (accepted && parameters.divergence_checks.enabled)
+    {
+      // a converged step must also be physically sane
+      TimerOutput::Scope scope (timer, "divergence checks");
+      checked = divergence_checks.check (state ());
+      if (!checked.passed)
+      {
+        accepted         = false;
+        rejection_reason = checked.reason;
+        ++failed_checks;
+      }
+    }
     if (accepted)
       break;
     solve_history.reject (rejection_reason);
@@ -571,29 +592,20 @@ void TwoFluidSolver<dim>::advance ()
     pcout << "  step rejected at t = " << time << " (" << rejection_reason
           << "); retrying with dt = " << dt << std::endl;
     if (dt < ts.minimum_time_step)
-    {
-      // stop cleanly: the diagnosis of the failed state, then the last good state
-      // saved as fields and as a checkpoint
-      const std::string report = describe_failed_state (2 * dt);
-      const std::string file   = parameters.output.folder + "/failure_report.txt";
-      if (Utilities::MPI::this_mpi_process (communicator) == 0)
-        std::ofstream (file) << report;
-      pcout << report;
-      flow_solution = saved_flow;
-      alpha         = alpha_old;
-      theta         = theta_old;
-      field_output.write (state ());
-      write_checkpoint ();
-      throw std::runtime_error ("time step fell below time stepping/minimum time step (" +
-                                std::to_string (ts.minimum_time_step) +
-                                ") at t = " + std::to_string (time) + " (" +
-                                rejection_reason + "); diagnosis in " + file +
-                                ", the last good state in checkpoint/");
-    }
-    flow_solution = saved_flow;
-    alpha         = alpha_old;
-    theta         = theta_old;
+      stop_diverged ("time step fell below time stepping/minimum time step",
+                     checked.where,
+                     2 * dt,
+                     restore);
+    if (!checked.passed && failed_checks > parameters.divergence_checks.retries)
+      stop_diverged ("a divergence check failed " + std::to_string (failed_checks) +
+                         " times in a row (divergence checks/retries = " +
+                         std::to_string (parameters.divergence_checks.retries) + ")",
+                     checked.where,
+                     2 * dt,
+                     restore);
+    restore ();
   }
+  divergence_checks.accept (checked.kinetic_energy);
   // shift history
   flow_old2  = flow_old;
   flow_old   = flow_solution;
@@ -609,6 +621,40 @@ void TwoFluidSolver<dim>::advance ()
   if (step_number % parameters.output.monitor_interval == 0 || last_step)
     record_monitors ();
   time_step = next_time_step (dt);
+  if (!last_step && time_step < ts.minimum_time_step)
+  {
+    // the speeds grew until the Courant limit is below the smallest step allowed: the
+    // accepted state is the last good one
+    std::ostringstream reason;
+    reason << "the Courant limit " << time_step
+           << " s fell below time stepping/minimum time step (peak speeds: gas "
+           << wave_speeds.gas << " m/s, solids " << wave_speeds.solids
+           << " m/s, granular sound " << wave_speeds.granular_sound << " m/s)";
+    rejection_reason = reason.str ();
+    stop_diverged (reason.str (), "", time_step, [] () {});
+  }
+}
+
+template <int dim>
+void TwoFluidSolver<dim>::stop_diverged (const std::string            &why,
+                                         const std::string            &where,
+                                         const double                  dt,
+                                         const std::function<void ()> &restore)
+{
+  // the diagnosis of the failed state, then the last good state saved as fields and as
+  // a checkpoint; status 3
+  const std::string report = describe_failed_state (dt, where);
+  const std::string file   = parameters.output.folder + "/failure_report.txt";
+  if (Utilities::MPI::this_mpi_process (communicator) == 0)
+    std::ofstream (file) << report;
+  pcout << report;
+  restore ();
+  field_output.write (state ());
+  write_checkpoint ();
+  throw std::runtime_error (why + " at t = " + std::to_string (time) + " (" +
+                            rejection_reason + "); diagnosis in " + file +
+                            ", the last good state (t = " + std::to_string (time) +
+                            ") in checkpoint/ and the last field output");
 }
 
 template <int dim>

@@ -7,8 +7,10 @@
 #include <wetbed/core/boundary_condition_parameters.h>
 #include <wetbed/core/bubble_analysis_parameters.h>
 #include <wetbed/core/checkpoint_parameters.h>
+#include <wetbed/core/divergence_check_parameters.h>
 #include <wetbed/core/kinetic_theory_parameters.h>
 #include <wetbed/core/mesh_parameters.h>
+#include <wetbed/core/momentum_form.h>
 #include <wetbed/core/spectrum_parameters.h>
 #include <wetbed/core/wet_particle_parameters.h>
 
@@ -143,6 +145,7 @@ struct Parameters
   BoundaryConditionParameters  boundary;
   InitialConditionParameters   initial;
   TimeSteppingParameters       time;
+  DivergenceCheckParameters    divergence_checks;
   LinearSolverParameters       linear_solver;
   OutputParameters             output;
   CheckpointParameters         checkpoint;
@@ -151,8 +154,11 @@ struct Parameters
   SpectrumParameters           spectrum;
   BedMonitorParameters         bed_monitors;
   bool                         stabilization; // SUPG + outlet backflow terms
-  bool        conservative_momentum;          // momentum equations/form = conservative
-  std::string parameter_file_directory;
+  // momentum equations/form: the weight of rho_k div(alpha_k u_k) u_k in the convection
+  // (1 conservative, 1/2 skew-symmetric, 0 advective)
+  MomentumForm momentum_form;
+  double       continuity_weight () const;
+  std::string  parameter_file_directory;
   // every `subsection/parameter` and its value as read, in the file's order (what a
   // checkpoint records of the run)
   std::vector<std::pair<std::string, std::string>> values;

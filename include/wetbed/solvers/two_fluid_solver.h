@@ -16,6 +16,7 @@
 #include <wetbed/postprocess/field_output.h>
 #include <wetbed/postprocess/monitors.h>
 #include <wetbed/solvers/checkpointing.h>
+#include <wetbed/solvers/divergence_checks.h>
 #include <wetbed/solvers/field_transfer.h>
 #include <wetbed/solvers/flow_system.h>
 #include <wetbed/solvers/granular_energy_solver.h>
@@ -41,6 +42,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <functional>
 #include <memory>
 
 namespace wetbed
@@ -171,7 +173,14 @@ private:
 
   /** The cause of the last rejection and where the failed state is extreme
    * (source/solvers/failure_report.cc); collective. */
-  std::string describe_failed_state (double dt) const;
+  std::string describe_failed_state (double dt, const std::string &where) const;
+  /** Stops a run that cannot go on: failure_report.txt (`why`, `where` the check
+   * failed, the failed state), then `restore` and the last good state written as
+   * fields and checkpoint; throws (status 3). */
+  [[noreturn]] void stop_diverged (const std::string            &why,
+                                   const std::string            &where,
+                                   double                        dt,
+                                   const std::function<void ()> &restore);
 
   double inlet_superficial_velocity (double t) const;
   /** Hanging-node and periodicity constraints of a space on this mesh, into
@@ -233,6 +242,8 @@ private:
   // its velocity correction added
   SolidsTransport<dim> solids_transport;
   TimeStepController   time_step_controller;
+  // the sanity of each step's result (speeds, FI, kinetic energy growth)
+  DivergenceChecks<dim> divergence_checks;
 
   MeshAdaptation<dim> mesh_adaptation;
   Checkpointing<dim>  checkpointing;

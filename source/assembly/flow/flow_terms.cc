@@ -22,7 +22,7 @@ void add_flow_terms (FlowAssembler<dim> &assembler, const FlowTermContext<dim> &
   const Boundaries &id = context.boundaries;
   const auto       &m  = context.material;
 
-  assembler.add_term (std::make_unique<InertiaTerm<dim>> (m, p.conservative_momentum));
+  assembler.add_term (std::make_unique<InertiaTerm<dim>> (m, p.momentum_form));
   assembler.add_term (std::make_unique<DragCouplingTerm<dim>> ());
   assembler.add_term (std::make_unique<ViscousTerm<dim>> ());
   assembler.add_term (std::make_unique<ConvectionTerm<dim>> (p.stabilization));

@@ -8,7 +8,7 @@ double InertiaTerm<dim>::mass (const FlowCellScratch<dim> &s,
                                const unsigned int          q,
                                const unsigned int          k) const
 {
-  if (!conservative)
+  if (form == MomentumForm::advective)
     return s.bdf_mass[k][q];
   const double density = k == 0 ? material.gas_density : material.particle_density;
   const double divergence =
@@ -18,7 +18,15 @@ double InertiaTerm<dim>::mass (const FlowCellScratch<dim> &s,
                                      s.u[k][q],
                                      s.grad_u[k][q],
                                      material.residual_solids_fraction);
-  return s.bdf_mass[k][q] + density * std::max (divergence, 0.0);
+  if (form == MomentumForm::conservative)
+    return s.bdf_mass[k][q] + density * std::max (divergence, 0.0);
+  // skew-symmetric: the mean of the new and the old fraction, half the divergence
+  const double old =
+      inertial_fraction (k, s.alpha_s_old[q], material.residual_solids_fraction) *
+      density;
+  const double rate      = s.inertia[k][q] > 0 ? s.bdf_mass[k][q] / s.inertia[k][q] : 0;
+  const double time_part = 0.5 * (s.bdf_mass[k][q] + rate * old);
+  return std::max (time_part + 0.5 * density * divergence, 0.5 * time_part);
 }
 
 template <int dim>
@@ -45,16 +53,22 @@ void InertiaTerm<dim>::cell (const FlowCellScratch<dim>   &s,
     const double w = s.JxW[q];
     for (unsigned int k = 0; k < 2; ++k)
     {
+      // the weights of u^n and u^{n-1} in the history
       double                 history[2] = {s.inertia[k][q], s.inertia[k][q]};
       dealii::Tensor<1, dim> force;
-      if (conservative)
+      if (form != MomentumForm::advective)
       {
         history[0] = inertial_fraction (k, s.alpha_s_old[q], residual) * density[k];
         history[1] = inertial_fraction (k, s.alpha_s_old2[q], residual) * density[k];
+      }
+      if (form == MomentumForm::conservative)
+      {
         const double divergence = inertial_flux_divergence<dim> (
             k, s.alpha_s[q], s.grad_alpha_s[q], s.u[k][q], s.grad_u[k][q], residual);
         force = -density[k] * std::min (divergence, 0.0) * s.u[k][q];
       }
+      else if (form == MomentumForm::skew_symmetric)
+        history[1] = 0.5 * (history[1] + history[0]);
       force -=
           (bdf.a1 * history[0] * s.u_old[k][q] + bdf.a2 * history[1] * s.u_old2[k][q]) /
           dt;
