@@ -15,7 +15,17 @@ BDF1 and BDF2 (adaptive stepping off, rejected steps still halve dt). --long add
 of its pieces. Every case's result is kept in build/benchmarks/stress/NAME.json and the
 table lists all cases that have one, so --only reruns some without losing the others.
 
+--3d runs the 3D columns instead, each on 2 ranks to --end-time-3d (default 3 s):
+prm/column_3d.prm as shipped, with adaptive refinement (levels 0-1), and the seed's
+5 cm x 1 m column (meshes/column_3d.geo with height 1 m and 80 layers, the same cell
+size) dry and wet at delta = 0.055, 0.1 and 0.138e-2 (the wet particles of
+prm/wet_column_2d.prm). They checkpoint every 10 minutes of wall time and continue from
+there when run again; their table (the 'stress_3d' section of doc/benchmarks.md) gives
+the peak speeds against the case's reference speed, rejected steps, the smallest step
+and the divergence checks that fired.
+
 usage: python3 benchmarks/stress.py [--end-time 0.2] [--jobs 2] [--long] [--only NAME ...]
+       python3 benchmarks/stress.py --3d [--end-time-3d 3] [--only NAME ...]
 (build first: bash scripts/build.sh)
 """
 import argparse
@@ -25,6 +35,7 @@ import json
 import math
 import os
 import re
+import sys
 
 from benchmark_setup import read_case, replace_doc_section, repository_root, run_resumable, write_case
 
@@ -34,6 +45,8 @@ parser.add_argument("--end-time", type=float, default=0.2)
 parser.add_argument("--jobs", type=int, default=2)
 parser.add_argument("--long", action="store_true")
 parser.add_argument("--only", nargs="*")
+parser.add_argument("--3d", dest="three_d", action="store_true")
+parser.add_argument("--end-time-3d", type=float, default=3.0)
 parser.add_argument("--collect", action="store_true",
                     help="only record cases run before results were kept in NAME.json")
 args = parser.parse_args()
@@ -127,6 +140,10 @@ def record(label, name, folder, code, wall):
     return result
 
 
+if args.three_d:
+    from stress_3d import run_3d_cases
+    run_3d_cases(root, work, args, env)
+    sys.exit(0)
 with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
     list(pool.map(run, cases))
 if args.collect:

@@ -479,15 +479,19 @@ void Parameters::declare_parameters (ParameterHandler &prm)
   prm.enter_subsection ("momentum equations");
   prm.declare_entry (
       "form",
-      "conservative",
+      "skew-symmetric",
       Selection ("conservative|advective|skew-symmetric"),
-      "conservative: d(alpha_k rho_k u_k)/dt + div(alpha_k rho_k u_k u_k), the time "
-      "derivative with each level's own volume fraction and the convection plus "
-      "rho_k div(alpha_k u_k) u_k (implicit where it adds mass, lagged where it removes "
-      "it); the mixture momentum then changes only by forces, so the mean pressure drop "
-      "carries the bed weight. advective: alpha_k rho_k Du_k/Dt, which differs by rho_k "
-      "u_k times the continuity residual of the discrete alpha_s (measured: a spurious "
-      "downward force of 6-9% of the bed weight in a bubbling bed).");
+      "skew-symmetric: the mean of the conservative and the advective form, with "
+      "rho_k div(alpha_k u_k) u_k / 2 implicit; tested with the velocity, inertia and "
+      "convection change only the kinetic energy, whatever the continuity residual of "
+      "the discrete alpha_s, so a cell that empties within a step cannot hand its "
+      "momentum to the little mass left in it (doc/theory.md, \"Time discretisation\"). "
+      "conservative: d(alpha_k rho_k u_k)/dt + div(alpha_k rho_k u_k u_k) with each time "
+      "level's own volume fraction; the mixture momentum changes only by forces, but the "
+      "kinetic energy is not bounded where alpha_s falls by orders of magnitude within a "
+      "step. advective: alpha_k rho_k Du_k/Dt, which differs from the conservative form "
+      "by rho_k u_k times the continuity residual of the discrete alpha_s, a spurious "
+      "force on the mixture.");
   prm.leave_subsection ();
   BoundaryConditionParameters::declare_parameters (prm);
   InitialConditionParameters::declare_parameters (prm);
