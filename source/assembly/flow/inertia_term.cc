@@ -4,12 +4,11 @@
 namespace wetbed
 {
 template <int dim>
-double InertiaTerm<dim>::mass (const FlowCellScratch<dim> &s,
-                               const unsigned int          q,
-                               const unsigned int          k) const
+std::pair<double, double> InertiaTerm<dim>::mass_coefficient (
+    const FlowCellScratch<dim> &s, const unsigned int q, const unsigned int k) const
 {
   if (form == MomentumForm::advective)
-    return s.bdf_mass[k][q];
+    return {s.bdf_mass[k][q], s.bdf_mass[k][q]};
   const double density = k == 0 ? material.gas_density : material.particle_density;
   const double divergence =
       inertial_flux_divergence<dim> (k,
@@ -19,14 +18,25 @@ double InertiaTerm<dim>::mass (const FlowCellScratch<dim> &s,
                                      s.grad_u[k][q],
                                      material.residual_solids_fraction);
   if (form == MomentumForm::conservative)
-    return s.bdf_mass[k][q] + density * std::max (divergence, 0.0);
-  // skew-symmetric: the mean of the new and the old fraction, half the divergence
+    return {s.bdf_mass[k][q] + density * divergence,
+            s.bdf_mass[k][q] + density * std::max (divergence, 0.0)};
+  // skew-symmetric: the mean of the new and the old fraction, half the divergence; the
+  // part below half the time coefficient is lagged (the diagonal stays positive)
   const double old =
       inertial_fraction (k, s.alpha_s_old[q], material.residual_solids_fraction) *
       density;
   const double rate      = s.inertia[k][q] > 0 ? s.bdf_mass[k][q] / s.inertia[k][q] : 0;
   const double time_part = 0.5 * (s.bdf_mass[k][q] + rate * old);
-  return std::max (time_part + 0.5 * density * divergence, 0.5 * time_part);
+  const double full      = time_part + 0.5 * density * divergence;
+  return {full, std::max (full, 0.5 * time_part)};
+}
+
+template <int dim>
+double InertiaTerm<dim>::mass (const FlowCellScratch<dim> &s,
+                               const unsigned int          q,
+                               const unsigned int          k) const
+{
+  return mass_coefficient (s, q, k).second;
 }
 
 template <int dim>
@@ -61,18 +71,14 @@ void InertiaTerm<dim>::cell (const FlowCellScratch<dim>   &s,
         history[0] = inertial_fraction (k, s.alpha_s_old[q], residual) * density[k];
         history[1] = inertial_fraction (k, s.alpha_s_old2[q], residual) * density[k];
       }
-      if (form == MomentumForm::conservative)
-      {
-        const double divergence = inertial_flux_divergence<dim> (
-            k, s.alpha_s[q], s.grad_alpha_s[q], s.u[k][q], s.grad_u[k][q], residual);
-        force = -density[k] * std::min (divergence, 0.0) * s.u[k][q];
-      }
-      else if (form == MomentumForm::skew_symmetric)
+      if (form == MomentumForm::skew_symmetric)
         history[1] = 0.5 * (history[1] + history[0]);
+      // the part of the mass coefficient not taken implicitly, with the lagged u*
+      const auto [full, m] = mass_coefficient (s, q, k);
+      force                = (m - full) * s.u[k][q];
       force -=
           (bdf.a1 * history[0] * s.u_old[k][q] + bdf.a2 * history[1] * s.u_old2[k][q]) /
           dt;
-      const double m = mass (s, q, k);
       for (unsigned int d = 0; d < dim; ++d)
       {
         const auto &rows = s.indices.velocity[k * dim + d];

@@ -3,6 +3,8 @@
 #include <wetbed/assembly/flow/flow_term.h>
 #include <wetbed/core/momentum_form.h>
 
+#include <utility>
+
 namespace wetbed
 {
 /**
@@ -37,10 +39,18 @@ public:
                      FlowPointCoefficients<dim>   &coefficients) const override;
   /** The mass coefficient of phase k at point q: a0 alpha_k rho_k / dt and, in the
    * conservative form, rho_k max(div(alpha_k u_k), 0); skew-symmetric: a0 rho_k (alpha_k*
-   * + alpha_k^n)/2 / dt + rho_k div(alpha_k u_k)/2, no less than half its first part. */
+   * + alpha_k^n)/2 / dt + rho_k div(alpha_k u_k)/2, no less than half its first part
+   * (the rest lagged). */
   double mass (const FlowCellScratch<dim> &scratch, unsigned int q, unsigned int k) const;
 
 private:
+  /** (the whole mass coefficient, its implicit part): they differ where the
+   * conservative form's divergence is negative or the skew-symmetric coefficient falls
+   * below half its time part; the difference goes to the rhs with the lagged u*. */
+  std::pair<double, double> mass_coefficient (const FlowCellScratch<dim> &scratch,
+                                              unsigned int                q,
+                                              unsigned int                k) const;
+
   FlowMaterial<dim> material;
   MomentumForm      form;
 };
