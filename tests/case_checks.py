@@ -4,12 +4,13 @@
 usage: case_checks.py CHECK WETBED SOURCE_DIR WORK_DIR
 CHECK: ergun | split_inlet | wall_groups | hydrostatic | packed | settling | ramp | kinetic | ranks |
        monitor_interval | signals | disk_full | bubbling | hdf5 | restart | amr | failure | bubbles |
-       matrix_free | divergence | column_3d
+       matrix_free | divergence | column_3d | seed_column
 """
 import csv
 import math
 import os
 import re
+import shutil
 import subprocess
 import sys
 
@@ -399,7 +400,7 @@ elif check == "restart":
     import time as clock
     # solved to 1e-11: the restart rebuilds the velocity AMG where the uninterrupted run
     # may reuse an older one, and the runs may differ only by the solver tolerance
-    overrides = ("subsection time stepping\n set end time = 0.03\nend\n"
+    overrides = ("subsection time stepping\n set end time = 0.02\nend\n"
                  "subsection linear solver\n set relative tolerance = 1e-11\nend\n"
                  "subsection checkpoint\n set at end = false\n")
     reference = run("kinetic_theory_bed", overrides + "end\n", 1, os.path.join(work, "restart_reference"))
@@ -441,7 +442,9 @@ elif check == "signals":
     import shutil
     import signal
     import time as clock
-    overrides = ("subsection time stepping\n set end time = 0.03\nend\n"
+    # 0.08 s (~3 s of wall time alone on 2 cores): mpirun forwards SIGTERM and SIGINT to
+    # the ranks about a second after it gets them, so a shorter run may end first
+    overrides = ("subsection time stepping\n set end time = 0.08\nend\n"
                  "subsection linear solver\n set relative tolerance = 1e-11\nend\n"
                  "subsection checkpoint\n set at end = false\n set wall time interval = 0\nend\n")
     reference = run("kinetic_theory_bed", overrides, 2, os.path.join(work, "signals_reference"))
@@ -791,6 +794,69 @@ elif check == "column_3d":
     late = [r for r in rows if r["time"] > 0.2]
     expect(min(r["time_step"] for r in late) > 1e-4,
            f"the step stays above 1e-4 s after 0.2 s ({min(r['time_step'] for r in late):.2e} s)")
+elif check == "seed_column":
+    # issue 54: one .geo for every column (mesh/geometry parameters), and the seed's
+    # instruments: the pressure probe with its FI and the ECT slab at a fixed frame rate,
+    # on a short 3D column on 2 ranks; a resume continues the ECT files as if unbroken
+    geometry = "subsection mesh\n set geometry parameters = height: 0.15, n_layers: 12, n_ring: 1\nend\n"
+    instruments = ("subsection bed monitors\n set pressure probe height = 0.01\nend\n"
+                   "subsection ECT sensor\n set enabled = true\n set centre height = 0.03\n set thickness = 0.02\n"
+                   " set frame rate = 1000\n set resolution = 8\n set levels = 2\nend\n"
+                   "subsection checkpoint\n set at end = false\n set interval = 4\nend\n")
+    end = "subsection time stepping\n set end time = {}\nend\n"
+    folder = os.path.join(work, "seed_column")
+    rows = run("column_3d", geometry + instruments + end.format(0.006), 2, folder)
+    # the mesh gmsh made: 0.15 m tall, (3 x 3 core + 4 x 3 x 1 ring) x 12 layers
+    text = open(os.path.join(folder, "mesh.msh")).read()
+    nodes = text[text.index("$Nodes"):text.index("$EndNodes")].splitlines()[2:]
+    top, i = 0.0, 0
+    while i < len(nodes):
+        count = int(nodes[i].split()[3])
+        top = max([top] + [float(line.split()[2]) for line in nodes[i + 1 + count:i + 1 + 2 * count]])
+        i += 1 + 2 * count
+    expect(abs(top - 0.15) < 1e-9, f"geometry parameters applied: the column is {top:.4f} m tall (0.15)")
+    expect(rows[-1]["active_cells"] == 21 * 12, f"{int(rows[-1]['active_cells'])} cells (21 per layer x 12 layers)")
+    # the pressure probe: below the inlet-to-outlet drop by the bed beneath the probe
+    last = rows[-1]
+    expect("probe_pressure_drop" in last and 0 < last["probe_pressure_drop"] < last["pressure_drop"],
+           f"probe pressure drop {last.get('probe_pressure_drop', math.nan):.1f} Pa, inlet-to-outlet "
+           f"{last['pressure_drop']:.1f} Pa")
+    ratio = last["probe_fluidization_index"] / last["fluidization_index"]
+    expect(abs(ratio - last["probe_pressure_drop"] / last["pressure_drop"]) < 1e-9 and 0.5 < ratio < 1,
+           f"probe FI / FI = {ratio:.3f} (the bed above 1 cm of 5 cm)")
+    # the ECT slab: a frame every 1 ms from t = 0, whatever the step
+    ect = list(csv.DictReader(open(os.path.join(folder, "ect.csv"))))
+    times = [float(r["time"]) for r in ect]
+    expect(len(ect) == 7 and all(abs(t - 0.001 * k) < 1e-12 for k, t in enumerate(times)),
+           f"{len(ect)} ECT frames at {times} (every 1 ms from 0 to 6 ms)")
+    steps = [r["time"] for r in rows]
+    expect(len(steps) != len(ect) or any(abs(a - b) > 1e-9 for a, b in zip(steps, times)),
+           "the frames are not the steps (time steps differ from the frame interval)")
+    slab = [float(r["alpha_s_slab"]) for r in ect]
+    expect(abs(slab[0] - 0.58) < 1e-6, f"frame 0: the slab inside the bed at rest holds alpha_s = {slab[0]:.6f} (0.58)")
+    expect(all(0 < a <= 0.61 for a in slab), f"slab alpha_s within (0, 0.61]: {min(slab):.4f} .. {max(slab):.4f}")
+    images = list(csv.reader(open(os.path.join(folder, "ect_images.csv"))))
+    corner, centre = images[1][1], float(images[1][1 + 3 * 8 + 3])
+    expect(len(images) == 8 and len(images[1]) == 65 and corner == "nan" and abs(centre - 0.58) < 1e-6,
+           f"images: 8 x 8 pixels a frame, corner outside the column ({corner}), centre {centre:.4f}")
+    # resumed from the last periodic checkpoint (every 4 steps) in a copy of the folder:
+    # the ECT files are cut back to it and continue as in the unbroken run
+    half = os.path.join(work, "seed_column_resumed")
+    shutil.rmtree(half, ignore_errors=True)
+    shutil.copytree(folder, half)
+    run("column_3d", geometry + instruments + end.format(0.006), 2, half, resume=True)
+    restart = re.search(r"at t = ([0-9.e+-]+)", run.stdout)
+    resumed = list(csv.DictReader(open(os.path.join(half, "ect.csv"))))
+    expect(restart is not None and 0 < float(restart.group(1)) < 0.006 and len(resumed) == len(ect) and
+           all(abs(float(a["alpha_s_slab"]) - float(b["alpha_s_slab"])) < 1e-9 for a, b in zip(resumed, ect)),
+           f"resumed at t = {restart.group(1) if restart else '?'} s: {len(resumed)} frames equal to the unbroken run's")
+    expect(len(list(csv.reader(open(os.path.join(half, "ect_images.csv"))))) == 8, "resumed: 7 images, no duplicate")
+    # a name the .geo does not define is refused before anything is written
+    bad = os.path.join(work, "seed_column_bad")
+    shutil.rmtree(bad, ignore_errors=True)
+    run("column_3d", "subsection mesh\n set geometry parameters = heigth: 1\nend\n", 1, bad, expected_exit=2)
+    expect("mesh/geometry parameters" in run.stderr and "'heigth'" in run.stderr and not os.path.exists(bad),
+           f"an unknown name is refused: {run.stderr.strip().splitlines()[-1][:160] if run.stderr.strip() else ''}")
 else:
     sys.exit(f"unknown check {check}")
 

@@ -63,13 +63,17 @@ def with_mesh(text, prm_file):
     return "\n".join(out) + "\n"
 
 
-# 1. every shipped case parses and runs a few steps
+# 1. every shipped case parses and runs a few steps; the large seed column (35,640 cells)
+# on a coarser mesh of the same column: its parameters are what is checked here
+COARSER = {"seed000_large_column.prm": "subsection mesh\n set geometry parameters = radius: 0.075, height: 1.5, "
+                                       "n_core: 3, n_ring: 2, n_layers: 30\nend\n"}
 for prm in sorted(os.listdir(os.path.join(source, "prm"))):
     if not prm.endswith(".prm"):
         continue
     text = with_mesh(open(os.path.join(source, "prm", prm)).read(), prm)
     folder = os.path.join(work, "good_" + prm[:-4])
-    text = override(text, f"subsection time stepping\n set end time = 3e-4\n set initial time step = 1e-4\nend\n"
+    text = override(text, COARSER.get(prm, "") +
+                    f"subsection time stepping\n set end time = 3e-4\n set initial time step = 1e-4\nend\n"
                           f"subsection output\n set folder = {folder}\n set field interval = 0\nend")
     code, out, err = run(text, "good_" + prm[:-4], ["--overwrite"])  # the folder may hold the last corpus run
     if code != 0 or not os.path.isfile(os.path.join(folder, "monitors.csv")):
@@ -198,6 +202,16 @@ cases = [
     ("initial refinement 10", "subsection mesh\n set initial refinement = 10\nend", ("mesh/initial refinement", "GB")),
     ("adaptive maximum level 12", "subsection adaptive refinement\n set enabled = true\n set maximum level = 12\nend", ("adaptive refinement/maximum level", "GB")),
     ("3D initial refinement 7", "set dimension = 3\nsubsection mesh\n set file = " + os.path.join(source, "meshes", "column_3d.geo") + "\n set initial refinement = 7\nend\nsubsection physical properties\n set gravity = 0, 0, -9.81\nend\nsubsection output\n set probe heights =\nend", ("mesh/initial refinement", "GB")),
+    ("geometry parameter the .geo does not define", "subsection mesh\n set geometry parameters = radius: 0.1\nend", ("mesh/geometry parameters", "'radius'", "width")),
+    ("geometry parameters without a colon", "subsection mesh\n set geometry parameters = height 0.5\nend", "mesh/geometry parameters"),
+    ("geometry parameter not a number", "subsection mesh\n set geometry parameters = height: tall\nend", ("mesh/geometry parameters", "'tall'")),
+    ("geometry parameter nan", "subsection mesh\n set geometry parameters = height: nan\nend", "mesh/geometry parameters"),
+    ("geometry parameter given twice", "subsection mesh\n set geometry parameters = ny: 10, ny: 20\nend", ("mesh/geometry parameters", "twice")),
+    ("geometry parameters for a .msh", "geometry msh", ("mesh/geometry parameters", ".msh")),
+    ("pressure probe above the top", "subsection bed monitors\n set pressure probe height = 5\nend", "bed monitors/pressure probe height"),
+    ("ECT slab above the top", "subsection ECT sensor\n set enabled = true\n set centre height = 0.29\nend", "ECT sensor/centre height"),
+    ("ECT slab below the inlet", "subsection ECT sensor\n set enabled = true\n set centre height = 0.01\nend", "ECT sensor/centre height"),
+    ("ECT frame rate 0", "subsection ECT sensor\n set enabled = true\n set frame rate = 0\nend", "ECT sensor/frame rate"),
     # resume problems exit 2
     ("resume without monitors.csv", "resume without monitors", "checkpoint/resume"),
     ("resume with a truncated monitors.csv", "resume truncated monitors", "checkpoint/resume"),
@@ -214,6 +228,7 @@ syntax_geo = os.path.join(work, "syntax_error.geo")
 with open(syntax_geo, "w") as f:
     f.write(open(os.path.join(source, "meshes", "column_2d.geo")).read().replace("Plane Surface(1) = {1};", "Plane Surface(1) = {1;"))
 special = {"triangle msh": f"subsection mesh\n set file = {triangles_msh}\nend",
+           "geometry msh": f"subsection mesh\n set file = {triangles_msh}\n set geometry parameters = height: 1\nend",
            "syntax error geo": f"subsection mesh\n set file = {syntax_geo}\nend"}
 # copies of the base run's folder (it wrote a checkpoint at its end) with one file spoilt
 damaged = {}

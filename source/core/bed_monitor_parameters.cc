@@ -29,6 +29,16 @@ void BedMonitorParameters::declare_parameters (ParameterHandler &prm)
                      Anything (),
                      "Points 'x, y[, z]; x, y[, z]; ...' (m): monitors.csv gains "
                      "probe_<i>_alpha_s and probe_<i>_pressure (p') there. Empty: none.");
+  prm.declare_entry ("pressure probe height",
+                     "",
+                     List (Double (0), 0, 1),
+                     "A pressure probe at this height above the inlet (m), as the "
+                     "wall probe of an experiment: monitors.csv gains "
+                     "probe_pressure_drop, the cross-section mean of p' at that height "
+                     "(16 x 16 points) minus the outlet's, and "
+                     "probe_fluidization_index, FI = probe_pressure_drop A / (buoyant "
+                     "bed weight). A dry bubbling bed reads FI = 1 minus the share of "
+                     "the bed below the probe. Empty: none.");
   prm.leave_subsection ();
 }
 
@@ -40,8 +50,11 @@ void BedMonitorParameters::parse_parameters (ParameterHandler  &prm,
   for (const auto &item :
        dealii::Utilities::split_string_list (prm.get ("pressure drop between")))
     pressure_drop_planes.push_back (dealii::Utilities::string_to_double (item));
-  surface_solids_fraction  = prm.get_double ("surface solids fraction");
-  const std::string probes = prm.get ("point probes");
+  surface_solids_fraction        = prm.get_double ("surface solids fraction");
+  const std::string probes       = prm.get ("point probes");
+  const std::string probe_height = prm.get ("pressure probe height");
+  pressure_probe_height =
+      probe_height.empty () ? -1 : dealii::Utilities::string_to_double (probe_height);
   prm.leave_subsection ();
   require (pressure_drop_planes.size () != 1,
            "bed monitors/pressure drop between",

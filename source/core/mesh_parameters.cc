@@ -4,11 +4,53 @@
 #include <deal.II/base/utilities.h>
 
 #include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
 
 namespace wetbed
 {
 using dealii::ParameterHandler;
 using namespace dealii::Patterns;
+
+namespace
+{
+/** 'name: value, name: value' as (name, value) pairs; an InputError naming
+ * `mesh/geometry parameters` for anything else. */
+std::vector<std::pair<std::string, double>>
+parse_geometry_parameters (const std::string &text)
+{
+  const std::string                           where = "mesh/geometry parameters";
+  std::vector<std::pair<std::string, double>> result;
+  for (const auto &item : dealii::Utilities::split_string_list (text, ','))
+  {
+    const auto colon = item.find (':');
+    require (colon != std::string::npos, where, "'" + item + "' is not 'name: value'");
+    const std::string name  = dealii::Utilities::trim (item.substr (0, colon));
+    const std::string value = dealii::Utilities::trim (item.substr (colon + 1));
+    const bool        identifier =
+        !name.empty () && !std::isdigit (static_cast<unsigned char> (name[0])) &&
+        std::all_of (name.begin (),
+                     name.end (),
+                     [] (const char c) {
+                       return std::isalnum (static_cast<unsigned char> (c)) || c == '_';
+                     });
+    require (identifier, where, "'" + name + "' is not a gmsh constant name");
+    for (const auto &earlier : result)
+      require (earlier.first != name, where, "'" + name + "' is given twice");
+    char        *end    = nullptr;
+    const double number = std::strtod (value.c_str (), &end);
+    require (!value.empty () && end == value.c_str () + value.size (),
+             where,
+             "the value of '" + name + "' ('" + value + "') is not a number");
+    require (std::isfinite (number),
+             where,
+             "the value of '" + name + "' ('" + value + "') is not finite");
+    result.emplace_back (name, number);
+  }
+  return result;
+}
+} // namespace
 
 void MeshParameters::declare_parameters (ParameterHandler &prm)
 {
@@ -18,6 +60,14 @@ void MeshParameters::declare_parameters (ParameterHandler &prm)
                      Anything (),
                      "gmsh geometry (.geo, meshed with the gmsh executable at start) or "
                      "mesh (.msh). A relative path is taken relative to the .prm file.");
+  prm.declare_entry (
+      "geometry parameters",
+      "",
+      Anything (),
+      "Numbers of a .geo file given to gmsh ('name: value, name: value', e.g. "
+      "'radius: 0.075, height: 1.5, n_layers: 120'): each name must be a "
+      "DefineConstant of the .geo, whose value it replaces (gmsh -setnumber). One .geo "
+      "then serves every size of a geometry. Empty: the .geo's own values.");
   prm.declare_entry ("initial refinement",
                      "1",
                      Integer (0, 10),
@@ -84,8 +134,10 @@ void MeshParameters::parse_parameters (ParameterHandler &prm)
   wall_face_weight           = prm.get_double ("wall face weight");
   const std::string periodic = prm.get ("periodic boundaries");
   periodic_direction         = std::string ("xyz").find (prm.get ("periodic direction"));
+  const std::string geometry = prm.get ("geometry parameters");
   prm.leave_subsection ();
   require (!file.empty (), "mesh/file", "is empty");
+  geometry_parameters = parse_geometry_parameters (geometry);
   // each group once, in one role
   std::vector<std::string> named;
   auto group_list = [&] (const std::string &value, const std::string &key)

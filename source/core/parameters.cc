@@ -502,6 +502,7 @@ void Parameters::declare_parameters (ParameterHandler &prm)
   AdaptiveRefinementParameters::declare_parameters (prm);
   BubbleAnalysisParameters::declare_parameters (prm);
   SpectrumParameters::declare_parameters (prm);
+  EctSensorParameters::declare_parameters (prm);
   DivergenceCheckParameters::declare_parameters (prm);
   BedMonitorParameters::declare_parameters (prm);
 }
@@ -544,6 +545,7 @@ void Parameters::parse_parameters (ParameterHandler &prm)
   adaptive_refinement.parse_parameters (prm, mesh.initial_refinement);
   bubble_analysis.parse_parameters (prm);
   spectrum.parse_parameters (prm);
+  ect_sensor.parse_parameters (prm);
   divergence_checks.parse_parameters (prm);
   bed_monitors.parse_parameters (prm, dimension);
   boundary.check_time_span (time.end_time);
@@ -559,6 +561,14 @@ void Parameters::collect_domain_checks ()
     checks.heights.push_back ({"output/probe heights", h, false});
   for (const double h : bed_monitors.pressure_drop_planes)
     checks.heights.push_back ({"bed monitors/pressure drop between", h, false});
+  if (bed_monitors.pressure_probe_height >= 0)
+    checks.heights.push_back ({"bed monitors/pressure probe height",
+                               bed_monitors.pressure_probe_height,
+                               false});
+  if (ect_sensor.enabled)
+    checks.heights.push_back ({"ECT sensor/centre height (the top of the slab)",
+                               ect_sensor.centre_height + ect_sensor.thickness / 2,
+                               false});
   checks.point_probes = bed_monitors.point_probes;
   checks.held_solids_velocity =
       boundary.hold_solids ? boundary.held_solids_velocity : std::string ();
@@ -687,6 +697,10 @@ Parameters Parameters::read (const std::string &filename, ParameterHandler &prm)
   Parameters parameters;
   parameters.parse_parameters (prm);
   parameters.values = values;
+  ParameterHandler declared;
+  declare_parameters (declared);
+  for (const auto &[name, value] : parameter_values (declared))
+    parameters.defaults[name] = value;
   parameters.parameter_file_directory =
       std::filesystem::absolute (filename).parent_path ().string ();
   return parameters;

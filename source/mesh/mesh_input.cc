@@ -1,4 +1,5 @@
 #include <wetbed/core/input_error.h>
+#include <wetbed/mesh/geo_constants.h>
 #include <wetbed/mesh/mesh_input.h>
 
 #include <deal.II/base/mpi.h>
@@ -181,7 +182,10 @@ bool same_bytes (const std::string &a, const std::string &b)
 class GeneratedMesh
 {
 public:
-  GeneratedMesh (const std::string &geo, const int dim, const std::string &folder)
+  GeneratedMesh (const std::string                                 &geo,
+                 const int                                          dim,
+                 const std::string                                 &folder,
+                 const std::vector<std::pair<std::string, double>> &numbers)
       : root (dealii::Utilities::MPI::this_mpi_process (MPI_COMM_WORLD) == 0),
         final_path (folder + "/mesh.msh"), log_path (folder + "/gmsh.log")
   {
@@ -192,9 +196,16 @@ public:
     std::string error;
     if (root)
     {
-      const ProgramRun run = run_program (
-          {"gmsh", "-" + std::to_string (dim), "-format", "msh41", geo, "-o", temporary});
-      log = run.output;
+      std::vector<std::string> arguments{"gmsh", "-" + std::to_string (dim)};
+      for (const auto &[name, value] : numbers)
+      {
+        std::ostringstream text;
+        text << std::setprecision (17) << value;
+        arguments.insert (arguments.end (), {"-setnumber", name, text.str ()});
+      }
+      arguments.insert (arguments.end (), {"-format", "msh41", geo, "-o", temporary});
+      const ProgramRun run = run_program (arguments);
+      log                  = run.output;
       if (run.spawn_error != 0)
         error = "cannot start gmsh to mesh '" + geo +
                 "' (is it installed and on PATH?): " + std::strerror (run.spawn_error);
@@ -620,6 +631,24 @@ std::string check_mesh_file (const MeshParameters &parameters,
   require (extension == ".geo" || extension == ".msh",
            "mesh/file",
            "'" + file + "' is neither a .geo nor a .msh file");
+  if (!parameters.geometry_parameters.empty ())
+  {
+    require (extension == ".geo",
+             "mesh/geometry parameters",
+             "are given, but '" + file + "' is a .msh (only a .geo takes them)");
+    std::ifstream      in (file);
+    std::ostringstream text;
+    text << in.rdbuf ();
+    const auto  defined = geo_defined_constants (text.str ());
+    std::string list;
+    for (const auto &name : defined)
+      list += (list.empty () ? "" : ", ") + name;
+    for (const auto &entry : parameters.geometry_parameters)
+      require (defined.count (entry.first) > 0,
+               "mesh/geometry parameters",
+               "'" + entry.first + "' is not a DefineConstant of '" + file +
+                   "' (it defines: " + (list.empty () ? "none" : list) + ")");
+  }
   return file;
 }
 
@@ -635,7 +664,8 @@ Boundaries read_mesh (const MeshParameters       &parameters,
   const std::string extension = std::filesystem::path (file).extension ().string ();
   std::unique_ptr<GeneratedMesh> generated;
   if (extension == ".geo")
-    generated = std::make_unique<GeneratedMesh> (file, dim, output_folder);
+    generated = std::make_unique<GeneratedMesh> (
+        file, dim, output_folder, parameters.geometry_parameters);
   const std::string msh = generated ? generated->path () : file;
   // named as the user knows it: the .geo, or the .msh given
   const std::string shown = generated ? file : msh;

@@ -30,6 +30,8 @@ std::string header (const MonitorColumns &columns)
          << columns.pressure_drop_planes[1];
   for (unsigned int i = 0; i < columns.point_probes; ++i)
     file << ",probe_" << i << "_alpha_s,probe_" << i << "_pressure";
+  if (columns.pressure_probe)
+    file << ",probe_pressure_drop,probe_fluidization_index";
   file << ",run"; // the run's id, last: the columns before keep their places
   return file.str ();
 }
@@ -141,6 +143,8 @@ void Monitors::add (const MonitorRow &r)
     file << ',' << dp;
   for (unsigned int i = 0; i < r.probe_alpha.size (); ++i)
     file << ',' << r.probe_alpha[i] << ',' << r.probe_pressure[i];
+  for (const double value : r.pressure_probe)
+    file << ',' << value;
   file << ',' << run << '\n';
   file.flush ();
 }

@@ -39,6 +39,8 @@ PressureDrop evaluate_pressure_drop (const SolverState<dim> &s, const double sol
     sum = Utilities::MPI::sum (sum, s.communicator);
   PressureDrop result;
   result.inlet_area = sums[1];
+  if (sums[3] > 0)
+    result.outlet_pressure = sums[2] / sums[3];
   if (sums[1] > 0 && sums[3] > 0)
     result.pressure_drop = sums[0] / sums[1] - sums[2] / sums[3];
   const auto  &pp = s.parameters.physical;

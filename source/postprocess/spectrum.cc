@@ -190,7 +190,8 @@ std::vector<double> write_monitor_spectra (const std::string       &monitors_fil
   const CsvTable table = read_csv (monitors_file);
   if (columns.empty ())
     for (const auto &name : table.names)
-      if (name == "pressure_drop" || name.rfind ("alpha_s_plane_", 0) == 0)
+      if (name == "pressure_drop" || name == "probe_pressure_drop" ||
+          name.rfind ("alpha_s_plane_", 0) == 0)
         columns.push_back (name);
   // the used samples finite: a NaN or inf would make every frequency NaN
   const auto &time = table.column ("time");

@@ -157,6 +157,11 @@ void check_identity (const CheckpointState &state,
     if (resume_may_change (name))
       continue;
     const auto it = saved.find (name);
+    // a parameter newer than the checkpoint: its default is what that run did
+    const auto declared = parameters.defaults.find (name);
+    if (it == saved.end () && declared != parameters.defaults.end () &&
+        declared->second == value)
+      continue;
     require (it != saved.end () && it->second == value,
              "checkpoint/resume",
              name + " = '" + value + "', the checkpoint's run had '" +
@@ -259,6 +264,7 @@ void Checkpointing<dim>::write (const SolverState<dim>       &s,
     std::vector<std::pair<std::string, unsigned long long>> appended =
         bubbles.file_lengths ();
     appended.emplace_back ("monitors.csv", state.monitors_bytes);
+    appended.insert (appended.end (), record.appended.begin (), record.appended.end ());
     for (const auto &[name, bytes] : appended)
       if (bytes > 0)
         state.appended_files.push_back (

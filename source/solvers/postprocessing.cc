@@ -62,7 +62,10 @@ template <int dim>
 void TwoFluidSolver<dim>::record_monitors ()
 {
   TimerOutput::Scope scope (timer, "monitors");
-  monitors.add (evaluate_monitors (state ()));
+  MonitorRow         row = evaluate_monitors (state ());
+  if (pressure_probe)
+    pressure_probe->fill (state (), row);
+  monitors.add (row);
   // rank 0 writes: all stop together when its file lost a row
   if (Utilities::MPI::broadcast (communicator, monitors.writing_failed (), 0))
     throw std::runtime_error (
@@ -100,6 +103,21 @@ void TwoFluidSolver<dim>::analyse_bubbles ()
 }
 
 template <int dim>
+void TwoFluidSolver<dim>::record_ect ()
+{
+  if (!ect_sensor)
+    return;
+  TimerOutput::Scope scope (timer, "ECT sensor");
+  alpha.update_ghost_values ();
+  ect_sensor->record (state ());
+  if (Utilities::MPI::broadcast (communicator, ect_sensor->writing_failed (), 0))
+    throw std::runtime_error (
+        "output/folder: cannot append to '" + parameters.output.folder +
+        "/ect.csv' at t = " + std::to_string (time) +
+        " (disk full or not writable); the last checkpoint is kept");
+}
+
+template <int dim>
 void TwoFluidSolver<dim>::write_spectra () const
 {
   const auto &sp = parameters.spectrum;
@@ -116,6 +134,20 @@ void TwoFluidSolver<dim>::write_spectra () const
     std::istringstream lines (table.str ());
     for (std::string line; std::getline (lines, line) && line[0] == '#';)
       pcout << "Spectrum " << line.substr (2) << std::endl;
+    if (ect_sensor)
+    {
+      std::ostringstream ect;
+      write_monitor_spectra (folder + "/" + EctSensor<dim>::signal_file,
+                             {"alpha_s_slab"},
+                             sp.start_time,
+                             sp.segments,
+                             ect);
+      std::ofstream (folder + "/ect_spectrum.csv") << ect.str ();
+      std::istringstream ect_lines (ect.str ());
+      std::string        line;
+      if (std::getline (ect_lines, line) && line[0] == '#')
+        pcout << "Spectrum (ECT) " << line.substr (2) << std::endl;
+    }
   }
   catch (const std::invalid_argument &e) // too few samples: the run is too short
   {
@@ -131,6 +163,8 @@ template std::vector<std::vector<double>>
               TwoFluidSolver<3>::sample (const std::vector<Point<3>> &) const;
 template void TwoFluidSolver<2>::record_monitors ();
 template void TwoFluidSolver<3>::record_monitors ();
+template void TwoFluidSolver<2>::record_ect ();
+template void TwoFluidSolver<3>::record_ect ();
 template void TwoFluidSolver<2>::make_bubble_analysis ();
 template void TwoFluidSolver<3>::make_bubble_analysis ();
 template void TwoFluidSolver<2>::analyse_bubbles ();

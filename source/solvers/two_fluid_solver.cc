@@ -68,6 +68,11 @@ TwoFluidSolver<dim>::TwoFluidSolver (const Parameters &parameters, MPI_Comm comm
       "t", parameters.boundary.inlet_superficial_velocity, {});
   held_velocity_function.initialize (
       "x,y,z,t", parameters.boundary.held_solids_velocity, {}, true);
+  if (parameters.bed_monitors.pressure_probe_height >= 0)
+    pressure_probe = std::make_unique<PressureProbe<dim>> (
+        parameters.bed_monitors.pressure_probe_height);
+  if (parameters.ect_sensor.enabled)
+    ect_sensor = std::make_unique<EctSensor<dim>> (parameters.ect_sensor);
 }
 
 template <int dim>
@@ -145,6 +150,8 @@ void TwoFluidSolver<dim>::initialize ()
                    run_id);
     bubble_analysis->open (folder, run_id);
     update_wave_speeds ();
+    if (ect_sensor)
+      ect_sensor->open (folder, state ());
   }
   if (parameters.checkpoint.on_signal)
     catch_stop_signals ();
@@ -186,6 +193,13 @@ void TwoFluidSolver<dim>::resume_from_checkpoint ()
   update_wave_speeds ();
   monitors.restore (evaluate_monitors (state ()));
   bubble_analysis->restore_state (saved.bubble_state, output, run_id);
+  if (ect_sensor)
+  {
+    std::vector<std::pair<std::string, unsigned long long>> lengths;
+    for (const AppendedFile &file : saved.appended_files)
+      lengths.emplace_back (file.name, file.bytes);
+    ect_sensor->reopen (output, lengths, state ());
+  }
   resumed = true;
   pcout << "Resumed run " << run_id << " from " << checkpointing.source ()
         << " at t = " << time << " (step " << step_number << ")" << std::endl;
@@ -198,7 +212,12 @@ void TwoFluidSolver<dim>::write_checkpoint ()
       state (),
       transferred_fields (),
       *bubble_analysis,
-      {time_step, monitors.bytes_written (), run_id, field_output.counters ()});
+      {time_step,
+       monitors.bytes_written (),
+       run_id,
+       field_output.counters (),
+       ect_sensor ? ect_sensor->file_lengths ()
+                  : std::vector<std::pair<std::string, unsigned long long>> ()});
 }
 
 template <int dim>
@@ -240,7 +259,8 @@ MonitorColumns TwoFluidSolver<dim>::monitor_columns () const
 {
   return {parameters.output.probe_heights,
           parameters.bed_monitors.pressure_drop_planes,
-          static_cast<unsigned int> (parameters.bed_monitors.point_probes.size ())};
+          static_cast<unsigned int> (parameters.bed_monitors.point_probes.size ()),
+          parameters.bed_monitors.pressure_probe_height >= 0};
 }
 
 template <int dim>
@@ -702,6 +722,7 @@ typename TwoFluidSolver<dim>::RunEnd TwoFluidSolver<dim>::run ()
       time_step = next_time_step (previous_time_step); // the CFL of the new mesh
     }
     analyse_bubbles ();
+    record_ect ();
     // a checkpoint on the step count, the wall clock (rank 0's, for all) or SIGUSR1;
     // SIGTERM/SIGINT/SIGUSR2 write one and stop
     const SignalRequest request =

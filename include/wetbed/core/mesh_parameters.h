@@ -34,7 +34,9 @@ struct DomainChecks
 /** `subsection mesh`: the gmsh geometry and how its physical groups are used. */
 struct MeshParameters
 {
-  std::string  file;               // .geo (meshed with gmsh at start) or .msh
+  std::string file; // .geo (meshed with gmsh at start) or .msh
+  // (name, value) of the .geo's DefineConstant numbers set with gmsh -setnumber
+  std::vector<std::pair<std::string, double>> geometry_parameters;
   unsigned int initial_refinement; // uniform refinements after reading
   // physical-group names of the inlets, outlets and walls; inlets/outlets empty: none
   std::vector<std::string> inlet_names, outlet_names, wall_names;

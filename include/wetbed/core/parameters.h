@@ -8,12 +8,14 @@
 #include <wetbed/core/bubble_analysis_parameters.h>
 #include <wetbed/core/checkpoint_parameters.h>
 #include <wetbed/core/divergence_check_parameters.h>
+#include <wetbed/core/ect_sensor_parameters.h>
 #include <wetbed/core/kinetic_theory_parameters.h>
 #include <wetbed/core/mesh_parameters.h>
 #include <wetbed/core/momentum_form.h>
 #include <wetbed/core/spectrum_parameters.h>
 #include <wetbed/core/wet_particle_parameters.h>
 
+#include <map>
 #include <string>
 
 namespace wetbed
@@ -152,6 +154,7 @@ struct Parameters
   AdaptiveRefinementParameters adaptive_refinement;
   BubbleAnalysisParameters     bubble_analysis;
   SpectrumParameters           spectrum;
+  EctSensorParameters          ect_sensor;
   BedMonitorParameters         bed_monitors;
   bool                         stabilization; // SUPG + outlet backflow terms
   // momentum equations/form: the weight of rho_k div(alpha_k u_k) u_k in the convection
@@ -162,6 +165,9 @@ struct Parameters
   // every `subsection/parameter` and its value as read, in the file's order (what a
   // checkpoint records of the run)
   std::vector<std::pair<std::string, std::string>> values;
+  // every `subsection/parameter` and its declared default (a checkpoint written before
+  // a parameter existed resumes if the case leaves it at its default)
+  std::map<std::string, std::string> defaults;
 
   static void declare_parameters (dealii::ParameterHandler &prm);
   void        parse_parameters (dealii::ParameterHandler &prm);

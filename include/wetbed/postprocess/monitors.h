@@ -64,6 +64,10 @@ struct MonitorRow
   double bed_surface_height = 0; // top of the highest slice with mean alpha_s above
   double expansion_ratio    = 0; // bed_surface_height / initial bed height
   std::vector<double> probe_alpha, probe_pressure; // at the point probes
+  // the pressure probe (bed monitors/pressure probe height): the cross-section mean of
+  // p' there minus the outlet's, and the FI from it (dP A over the buoyant bed weight);
+  // empty without one
+  std::vector<double> pressure_probe;
 };
 
 /** The optional columns of monitors.csv. */
@@ -72,6 +76,7 @@ struct MonitorColumns
   std::vector<double> probe_heights;        // alpha_s_plane_<height>
   std::vector<double> pressure_drop_planes; // pressure_drop_<a>_<b> (two heights or none)
   unsigned int        point_probes = 0;     // probe_<i>_alpha_s, probe_<i>_pressure
+  bool pressure_probe = false; // probe_pressure_drop, probe_fluidization_index
 };
 
 /** Collects MonitorRows and writes them (rank 0) to a CSV file; its last column, run,

@@ -7,9 +7,10 @@ namespace wetbed
 /** The pressure drop across the bed and the fluidization index. */
 struct PressureDrop
 {
-  double pressure_drop = 0; // mean p' over the inlet minus the mean over the outlet, Pa
-  double inlet_area    = 0; // m^2 (m in 2D)
-  double fluidization  = 0; // dP A / buoyant bed weight; 0 without inlet or outlet
+  double pressure_drop   = 0; // mean p' over the inlet minus the mean over the outlet, Pa
+  double inlet_area      = 0; // m^2 (m in 2D)
+  double outlet_pressure = 0; // mean p' over the outlet, Pa
+  double fluidization    = 0; // dP A / buoyant bed weight; 0 without inlet or outlet
 };
 
 /** The pressure drop of the state (p' excludes the gas hydrostatic part, so the bed

@@ -42,8 +42,9 @@ struct CsvTable
 CsvTable read_csv (const std::string &filename);
 
 /**
- * The spectra of the columns of a monitors.csv (pressure_drop and every
- * alpha_s_plane_* column unless `columns` names others), written as CSV: comment lines
+ * The spectra of the columns of a monitors.csv (pressure_drop, probe_pressure_drop
+ * and every alpha_s_plane_* column unless `columns` names others), written as CSV:
+ * comment lines
  * `# <column>: dominant frequency <f> Hz`, then frequency and one PSD column each.
  * Returns the dominant frequencies.
  */

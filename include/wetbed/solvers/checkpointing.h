@@ -78,13 +78,16 @@ class Checkpointing
 {
 public:
   /** What a checkpoint keeps besides the state view: the next time step, the length
-   * of monitors.csv, the run's id and the field output counters. */
+   * of monitors.csv, the run's id, the field output counters and the lengths of the
+   * other files appended to. */
   struct RunRecord
   {
     double                              next_time_step;
     unsigned long long                  monitors_bytes;
     std::string                         run_id;
     typename FieldOutput<dim>::Counters outputs;
+    // other files the run appends to (the ECT sensor's): name, bytes
+    std::vector<std::pair<std::string, unsigned long long>> appended;
   };
 
   Checkpointing (const Parameters           &parameters,

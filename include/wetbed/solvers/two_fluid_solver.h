@@ -13,8 +13,10 @@
 #include <wetbed/mesh/mesh_input.h>
 #include <wetbed/mesh/partition_independent_triangulation.h>
 #include <wetbed/postprocess/bubble_analysis.h>
+#include <wetbed/postprocess/ect_sensor.h>
 #include <wetbed/postprocess/field_output.h>
 #include <wetbed/postprocess/monitors.h>
+#include <wetbed/postprocess/pressure_probe.h>
 #include <wetbed/solvers/checkpointing.h>
 #include <wetbed/solvers/divergence_checks.h>
 #include <wetbed/solvers/field_transfer.h>
@@ -167,8 +169,10 @@ private:
   void make_bubble_analysis ();
   /** Detects and tracks bubbles if enabled and due at this step. */
   void analyse_bubbles ();
-  /** spectrum.csv from monitors.csv, at the end of a run that lasted past the spectrum
-   * start time (rank 0). */
+  /** The ECT sensor's frames since the last accepted step, if it is enabled. */
+  void record_ect ();
+  /** spectrum.csv from monitors.csv (and ect_spectrum.csv from ect.csv), at the end of a
+   * run that lasted past the spectrum start time (rank 0). */
   void write_spectra () const;
 
   /** The cause of the last rejection and where the failed state is extreme
@@ -250,6 +254,9 @@ private:
 
   Monitors                             monitors;
   std::unique_ptr<BubbleAnalysis<dim>> bubble_analysis;
+  // the seed's instruments, when the case asks for them
+  std::unique_ptr<PressureProbe<dim>> pressure_probe;
+  std::unique_ptr<EctSensor<dim>>     ect_sensor;
   // the field files and their counters
   FieldOutput<dim> field_output;
   double           time, time_step, previous_time_step;

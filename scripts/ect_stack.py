@@ -1,0 +1,107 @@
+#!/usr/bin/env python3
+"""The ECT frames of one or more runs stacked in time, side by side (as seed 000's Fig. 4
+shows dry beside wet beds).
+
+usage: scripts/ect_stack.py RUN_FOLDER [RUN_FOLDER ...] [--labels A,B,...] [--start T]
+                            [--end T] [--out FILE]
+
+Reads each run's ect_images.csv and ect.csv (subsection ECT sensor). For every frame the
+pixels along the diameter through the column's axis (the middle row of the image; the
+mean of the two middle rows for an even resolution) become one column of a time-position
+picture, alpha_s in grey (white: gas, black: packed). Under each picture, the slab mean
+alpha_s_slab against time. Prints per run the number of frames, the mean and standard
+deviation of alpha_s_slab and, if ect_spectrum.csv exists, its dominant frequency.
+Writes FILE (default ect_stack.png in the first run folder).
+Uses Debian's python3-matplotlib (re-executes under /usr/bin/python3 if needed)."""
+import argparse
+import csv
+import math
+import os
+import sys
+
+
+def ensure_matplotlib():
+    try:
+        import matplotlib  # noqa: F401
+        import numpy  # noqa: F401
+    except ImportError:
+        if os.path.exists("/usr/bin/python3") and os.path.realpath(sys.executable) != "/usr/bin/python3":
+            os.execv("/usr/bin/python3", ["/usr/bin/python3"] + sys.argv)
+        raise
+
+
+def read_run(folder, start, end):
+    """(times, diameter lines [frames x pixels], slab means) of the frames in [start, end]."""
+    import numpy as np
+    path = os.path.join(folder, "ect_images.csv")
+    if not os.path.exists(path):
+        sys.exit(f"{path}: not found (enable subsection ECT sensor)")
+    with open(path) as f:
+        rows = list(csv.reader(f))
+    pixels = len(rows[0]) - 1
+    n = int(round(math.sqrt(pixels)))
+    if n * n != pixels:
+        sys.exit(f"{path}: {pixels} pixels a frame is not a square image")
+    data = np.array([[float(v) for v in row] for row in rows[1:]])
+    keep = (data[:, 0] >= start) & (data[:, 0] <= end)
+    data = data[keep]
+    images = data[:, 1:].reshape(len(data), n, n)  # [frame, second axis, first axis]
+    middle = images[:, n // 2, :] if n % 2 else 0.5 * (images[:, n // 2 - 1, :] + images[:, n // 2, :])
+    with open(os.path.join(folder, "ect.csv")) as f:
+        signal = [r for r in csv.DictReader(f) if start <= float(r["time"]) <= end]
+    return data[:, 0], middle, np.array([float(r["alpha_s_slab"]) for r in signal])
+
+
+def dominant_frequency(folder):
+    path = os.path.join(folder, "ect_spectrum.csv")
+    if not os.path.exists(path):
+        return None
+    for line in open(path):
+        if line.startswith("# alpha_s_slab: dominant frequency"):
+            return float(line.split("dominant frequency")[1].split()[0])
+    return None
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("runs", nargs="+")
+    parser.add_argument("--labels", default="")
+    parser.add_argument("--start", type=float, default=0.0)
+    parser.add_argument("--end", type=float, default=math.inf)
+    parser.add_argument("--out", default="")
+    args = parser.parse_args()
+    ensure_matplotlib()
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import numpy as np
+    labels = args.labels.split(",") if args.labels else [os.path.basename(os.path.normpath(r)) for r in args.runs]
+    if len(labels) != len(args.runs):
+        sys.exit("--labels: one label per run folder")
+    figure, axes = plt.subplots(2, len(args.runs), figsize=(4.5 * len(args.runs), 6), squeeze=False,
+                                gridspec_kw={"height_ratios": [3, 1]})
+    for k, (run, label) in enumerate(zip(args.runs, labels)):
+        times, lines, slab = read_run(run, args.start, args.end)
+        if len(times) == 0:
+            sys.exit(f"{run}: no ECT frame in [{args.start}, {args.end}] s")
+        top, bottom = axes[0][k], axes[1][k]
+        picture = top.imshow(lines.T, aspect="auto", origin="lower", cmap="Greys", vmin=0, vmax=0.61,
+                             extent=[times[0], times[-1], -1, 1], interpolation="nearest")
+        top.set_title(label)
+        top.set_ylabel("position across the diameter, x/R")
+        bottom.plot(times, slab, lw=0.8)
+        bottom.set_xlim(times[0], times[-1])
+        bottom.set_xlabel("time (s)")
+        bottom.set_ylabel("slab mean alpha_s")
+        figure.colorbar(picture, ax=top, label="alpha_s")
+        f = dominant_frequency(run)
+        print(f"{label}: {len(times)} frames, alpha_s_slab mean {np.mean(slab):.4f}, std {np.std(slab):.4f}"
+              + (f", dominant frequency {f:.3g} Hz" if f is not None else ""))
+    figure.tight_layout()
+    out = args.out or os.path.join(args.runs[0], "ect_stack.png")
+    figure.savefig(out, dpi=120)
+    print(f"wrote {out}")
+
+
+if __name__ == "__main__":
+    main()
