@@ -4,7 +4,7 @@
 usage: case_checks.py CHECK WETBED SOURCE_DIR WORK_DIR
 CHECK: ergun | split_inlet | wall_groups | hydrostatic | packed | settling | ramp | kinetic | ranks |
        monitor_interval | signals | disk_full | bubbling | hdf5 | restart | amr | failure | bubbles |
-       matrix_free | divergence | column_3d | seed_column
+       matrix_free | divergence | column_3d | seed_column | statistics
 """
 import csv
 import math
@@ -593,7 +593,7 @@ elif check == "disk_full":
         appended = ("subsection time stepping\n set end time = 0.5\nend\n"
                     "subsection checkpoint\n set at end = false\nend\n"
                     "subsection output\n set field interval = 0\n set field format = vtu\nend\n")
-        mounted = subprocess.run(["mount", "-t", "tmpfs", "-o", "size=270k", "tmpfs", mount], capture_output=True)
+        mounted = subprocess.run(["mount", "-t", "tmpfs", "-o", "size=290k", "tmpfs", mount], capture_output=True)
         try:
             folder = os.path.join(mount, "run")
             run("kinetic_theory_bed", appended, 2, folder, expected_exit=3)
@@ -602,7 +602,7 @@ elif check == "disk_full":
             written = open(os.path.join(folder, "monitors.csv")).read().split("\n")
             complete = [l for l in written[1:-1] if l.count(",") == written[0].count(",")]
             expect(len(lines) == 1 and "output/folder" in message and "monitors.csv" in message,
-                   f"2 ranks: monitors.csv on a full disk (270 kB tmpfs): exit 3, '{message[:170]}'")
+                   f"2 ranks: monitors.csv on a full disk (290 kB tmpfs): exit 3, '{message[:170]}'")
             expect(len(complete) == len(written) - 2 and len(complete) > 100,
                    f"2 ranks: the {len(complete)} rows before are whole")
         finally:
@@ -857,6 +857,89 @@ elif check == "seed_column":
     run("column_3d", "subsection mesh\n set geometry parameters = heigth: 1\nend\n", 1, bad, expected_exit=2)
     expect("mesh/geometry parameters" in run.stderr and "'heigth'" in run.stderr and not os.path.exists(bad),
            f"an unknown name is refused: {run.stderr.strip().splitlines()[-1][:160] if run.stderr.strip() else ''}")
+elif check == "statistics":
+    # issue 50: time averages of the fields from a start time on, weighted by the step
+    # lengths, read back from the HDF5 output (single precision, hence tolerances of
+    # 1e-6): the written alpha_s_mean and alpha_s_variance against the same sums over the
+    # fields written at every step; a run resumed from a mid-run checkpoint ends with the
+    # same averages (1e-10); with adaptive refinement the mean alpha_s keeps the solids
+    # mass
+    try:
+        import numpy
+        import h5py  # noqa: F401
+    except ImportError:  # Debian's python3-numpy and python3-h5py live under /usr/bin/python3
+        if os.path.realpath(sys.executable) != "/usr/bin/python3":
+            os.execv("/usr/bin/python3", ["/usr/bin/python3"] + sys.argv)
+        raise
+    sys.path.insert(0, os.path.join(source, "scripts"))
+    import render_fields
+    start = 0.008
+    over = ("subsection time stepping\n set end time = 0.02\nend\n"
+            f"subsection statistics\n set time averages = true\n set start time = {start}\nend\n"
+            "subsection checkpoint\n set interval = 7\n set at end = false\nend\n"
+            "subsection output\n set field interval = 1e-9\n set monitor interval = 1\n"
+            " set field format = hdf5\nend\n")
+    folder = os.path.join(work, "statistics")
+    rows = run("quick_start_2d", over, 1, folder)
+    frames = render_fields.hdf5_frames(folder)
+    expect(len(frames) == len(rows), f"{len(frames)} field outputs, one per step ({len(rows)} monitor rows)")
+    names = ["alpha_s", "alpha_s_mean", "alpha_s_variance", "granular_temperature", "granular_temperature_mean"]
+    fields = [load(names).fields for _, load in frames]
+    times = [r["time"] for r in rows]
+    weights = [0.0] + [min(times[k] - times[k - 1], max(0.0, times[k] - start)) for k in range(1, len(times))]
+    total = sum(weights)
+    expect(abs(total - (times[-1] - start)) < 1e-12, f"averaged over {total:.6f} s = end - start")
+
+    def weighted(name):
+        mean = sum(w * f[name] for w, f in zip(weights, fields)) / total
+        return mean, sum(w * (f[name] - mean) ** 2 for w, f in zip(weights, fields)) / total
+
+    mean, variance = weighted("alpha_s")
+    last = fields[-1]
+    nodes = numpy.arange(len(mean)) % 9
+    nodes = numpy.isin(nodes, (0, 2, 6, 8))  # the Q1 nodes: the corners of each 3 x 3 patch
+    error_mean = numpy.max(numpy.abs(last["alpha_s_mean"] - mean))
+    error_variance = numpy.max(numpy.abs(last["alpha_s_variance"] - variance)[nodes])
+    expect(error_mean < 1e-6, f"alpha_s_mean = the step-weighted mean of the outputs (max difference {error_mean:.1e})")
+    expect(error_variance < 1e-6 * numpy.max(variance) and numpy.max(variance) > 1e-6,
+           f"alpha_s_variance = their weighted variance at the nodes (max difference {error_variance:.1e}, "
+           f"largest variance {numpy.max(variance):.2e})")
+    theta_mean, _ = weighted("granular_temperature")
+    error_theta = numpy.max(numpy.abs(last["granular_temperature_mean"] - theta_mean))
+    expect(error_theta < 1e-6 * numpy.max(theta_mean), f"granular_temperature_mean likewise ({error_theta:.1e})")
+    before = fields[[k for k, t in enumerate(times) if t <= start][-1]]
+    expect(numpy.max(numpy.abs(before["alpha_s_mean"])) == 0, "nothing is averaged before the start time")
+    # resumed from the checkpoint of step 14 in a copy of the folder
+    half = os.path.join(work, "statistics_resumed")
+    shutil.rmtree(half, ignore_errors=True)
+    shutil.copytree(folder, half)
+    run("quick_start_2d", over, 1, half, resume=True)
+    resumed = render_fields.hdf5_frames(half)[-1][1](names).fields
+    difference = numpy.max(numpy.abs(resumed["alpha_s_mean"] - last["alpha_s_mean"]))
+    difference_variance = numpy.max(numpy.abs(resumed["alpha_s_variance"] - last["alpha_s_variance"]))
+    restart = re.search(r"at t = ([0-9.e+-]+)", run.stdout)
+    expect(restart is not None and start < float(restart.group(1)) < times[-1] and difference < 1e-10
+           and difference_variance < 1e-10 * numpy.max(variance),
+           f"resumed at t = {restart.group(1) if restart else '?'} s: the same averages "
+           f"(differences {difference:.1e}, {difference_variance:.1e})")
+    # adaptive refinement at every step: the mean alpha_s holds the solids mass
+    amr = os.path.join(work, "statistics_amr")
+    rows = run("bubbling_bed_2d", "subsection time stepping\n set end time = 0.012\nend\n"
+               "subsection statistics\n set time averages = true\n set start time = 0.004\nend\n"
+               "subsection adaptive refinement\n set enabled = true\n set interval = 1\n set maximum level = 2\nend\n"
+               "subsection output\n set field format = hdf5\nend\n", 1, amr)
+    frame = render_fields.hdf5_frames(amr)[-1][1](["alpha_s", "alpha_s_mean"])
+    corners = frame.points[frame.cells][:, :, :2]
+    x, y = corners[:, :, 0], corners[:, :, 1]
+    area = 0.5 * numpy.abs(numpy.sum(x * numpy.roll(y, -1, axis=1) - numpy.roll(x, -1, axis=1) * y, axis=1))
+    density = 2500.0
+    integral = lambda name: density * numpy.sum(area * frame.fields[name][frame.cells].mean(axis=1))  # noqa: E731
+    cells = [int(r["active_cells"]) for r in rows]
+    changes = sum(a != b for a, b in zip(cells, cells[1:]))
+    mass = rows[-1]["solids_mass"]
+    expect(changes >= 3 and abs(integral("alpha_s_mean") / mass - 1) < 1e-6 and abs(integral("alpha_s") / mass - 1) < 1e-6,
+           f"{changes} mesh changes: the mean alpha_s holds {integral('alpha_s_mean') / mass - 1:.1e} "
+           f"of the solids mass more than it (alpha_s itself {integral('alpha_s') / mass - 1:.1e})")
 else:
     sys.exit(f"unknown check {check}")
 

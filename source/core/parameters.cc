@@ -503,6 +503,7 @@ void Parameters::declare_parameters (ParameterHandler &prm)
   BubbleAnalysisParameters::declare_parameters (prm);
   SpectrumParameters::declare_parameters (prm);
   EctSensorParameters::declare_parameters (prm);
+  StatisticsParameters::declare_parameters (prm);
   DivergenceCheckParameters::declare_parameters (prm);
   BedMonitorParameters::declare_parameters (prm);
 }
@@ -546,6 +547,7 @@ void Parameters::parse_parameters (ParameterHandler &prm)
   bubble_analysis.parse_parameters (prm);
   spectrum.parse_parameters (prm);
   ect_sensor.parse_parameters (prm);
+  statistics.parse_parameters (prm);
   divergence_checks.parse_parameters (prm);
   bed_monitors.parse_parameters (prm, dimension);
   boundary.check_time_span (time.end_time);

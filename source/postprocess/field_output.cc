@@ -1,5 +1,6 @@
 #include <wetbed/core/output_folder.h>
 #include <wetbed/postprocess/field_output.h>
+#include <wetbed/postprocess/time_averages.h>
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
@@ -114,6 +115,9 @@ void FieldOutput<dim>::write (const SolverState<dim> &s)
   data_out.add_data_vector (alpha_dof_handler, solids_pressure, "solids_pressure");
   if (kinetic_theory)
     data_out.add_data_vector (alpha_dof_handler, theta, "granular_temperature");
+  if (s.time_averages)
+    s.time_averages->add_fields (
+        data_out, flow_dof_handler, alpha_dof_handler, names, s.time);
 
   const unsigned int n_cells = triangulation.n_active_cells ();
   Vector<float> drag_coefficient (n_cells), shear_viscosity (n_cells), level (n_cells);

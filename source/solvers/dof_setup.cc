@@ -68,6 +68,8 @@ void TwoFluidSolver<dim>::setup_dofs ()
   flow_solution.reinit (flow_owned, flow_relevant, communicator);
   flow_old.reinit (flow_solution);
   flow_old2.reinit (flow_solution);
+  if (time_averages) // a mesh change or a resume transfers them afterwards
+    time_averages->reinit (flow_solution, alpha);
   // the operator's sparsity, the reaction rows, a fresh preconditioner
   flow_system.reinit (mapping,
                       flow_dof_handler,

@@ -50,8 +50,11 @@ void FieldTransfer<dim>::receive (const TransferredFields<dim>    &fields,
                                   const bool                       from_checkpoint)
 {
   const MPI_Comm communicator = flow_dof_handler.get_triangulation ().get_communicator ();
-  std::vector<BlockVector>   owned (3, BlockVector (flow_owned, communicator));
-  std::vector<BlockVector *> received{&owned[0], &owned[1], &owned[2]};
+  std::vector<BlockVector>   owned (fields.flow.size (),
+                                  BlockVector (flow_owned, communicator));
+  std::vector<BlockVector *> received;
+  for (BlockVector &v : owned)
+    received.push_back (&v);
   if (from_checkpoint)
     flow.deserialize (received);
   else
@@ -61,7 +64,7 @@ void FieldTransfer<dim>::receive (const TransferredFields<dim>    &fields,
       DoFTools::extract_locally_relevant_dofs (flow_dof_handler));
   DoFTools::make_hanging_node_constraints (flow_dof_handler, hanging);
   hanging.close ();
-  for (unsigned int k = 0; k < 3; ++k)
+  for (unsigned int k = 0; k < owned.size (); ++k)
   {
     hanging.distribute (owned[k]);
     *fields.flow[k] = owned[k];

@@ -154,7 +154,7 @@ template <int dim>
 void MeshAdaptation<dim>::prepare (
     const SolverState<dim>                    &s,
     parallel::distributed::Triangulation<dim> &triangulation,
-    const std::array<const AlphaVector *, 3>  &alpha_levels)
+    const std::vector<const AlphaVector *>    &alpha_levels)
 {
   flag_cells (s, triangulation);
   triangulation.prepare_coarsening_and_refinement ();
@@ -170,15 +170,16 @@ void MeshAdaptation<dim>::prepare (
   coarsened.clear ();
   for (const auto &part : Utilities::MPI::all_gather (s.communicator, coarsened_local))
     coarsened.insert (part.begin (), part.end ());
-  for (unsigned int k = 0; k < 3; ++k)
-    masses[k] = s.solids_mass (*alpha_levels[k]);
+  masses.clear ();
+  for (const AlphaVector *a : alpha_levels)
+    masses.push_back (s.solids_mass (*a));
 }
 
 template <int dim>
 void MeshAdaptation<dim>::restore_solids_mass (
-    const SolverState<dim>             &s,
-    const AffineConstraints<double>    &alpha_constraints,
-    const std::array<AlphaVector *, 3> &alpha_levels) const
+    const SolverState<dim>           &s,
+    const AffineConstraints<double>  &alpha_constraints,
+    const std::vector<AlphaVector *> &alpha_levels) const
 {
   // the nodes of the coarsened cells, where the coarsening deficit is given back
   const AlphaVector                   &alpha = *alpha_levels[0];
@@ -193,7 +194,7 @@ void MeshAdaptation<dim>::restore_solids_mass (
         if (owned.is_element (dof))
           candidate[alpha.get_partitioner ()->global_to_local (dof)] = true;
     }
-  for (unsigned int k = 0; k < 3; ++k)
+  for (unsigned int k = 0; k < alpha_levels.size (); ++k)
     restore (s, alpha_constraints, *alpha_levels[k], masses[k], candidate);
 }
 

@@ -48,7 +48,8 @@ SolverState<dim> TwoFluidSolver<dim>::state () const
                           initial_solids_mass,
                           solids_transport.correction_momentum (),
                           granular_energy.budget (),
-                          wave_speeds};
+                          wave_speeds,
+                          time_averages.get ()};
 }
 
 template <int dim>
@@ -118,6 +119,16 @@ void TwoFluidSolver<dim>::record_ect ()
 }
 
 template <int dim>
+void TwoFluidSolver<dim>::accumulate_averages ()
+{
+  if (!time_averages)
+    return;
+  TimerOutput::Scope scope (timer, "time averages");
+  BlockVector        owned (flow_owned, communicator);
+  time_averages->add (time, previous_time_step, flow_solution, alpha, theta, owned);
+}
+
+template <int dim>
 void TwoFluidSolver<dim>::write_spectra () const
 {
   const auto &sp = parameters.spectrum;
@@ -165,6 +176,8 @@ template void TwoFluidSolver<2>::record_monitors ();
 template void TwoFluidSolver<3>::record_monitors ();
 template void TwoFluidSolver<2>::record_ect ();
 template void TwoFluidSolver<3>::record_ect ();
+template void TwoFluidSolver<2>::accumulate_averages ();
+template void TwoFluidSolver<3>::accumulate_averages ();
 template void TwoFluidSolver<2>::make_bubble_analysis ();
 template void TwoFluidSolver<3>::make_bubble_analysis ();
 template void TwoFluidSolver<2>::analyse_bubbles ();

@@ -73,6 +73,9 @@ TwoFluidSolver<dim>::TwoFluidSolver (const Parameters &parameters, MPI_Comm comm
         parameters.bed_monitors.pressure_probe_height);
   if (parameters.ect_sensor.enabled)
     ect_sensor = std::make_unique<EctSensor<dim>> (parameters.ect_sensor);
+  if (parameters.statistics.time_averages)
+    time_averages =
+        std::make_unique<TimeAverages<dim>> (parameters.statistics.start_time);
 }
 
 template <int dim>
@@ -223,8 +226,17 @@ void TwoFluidSolver<dim>::write_checkpoint ()
 template <int dim>
 TransferredFields<dim> TwoFluidSolver<dim>::transferred_fields ()
 {
-  return {{{&flow_solution, &flow_old, &flow_old2}},
-          {{&alpha, &alpha_old, &alpha_old2, &theta, &theta_old, &theta_old2}}};
+  TransferredFields<dim> fields{
+      {&flow_solution, &flow_old, &flow_old2},
+      {&alpha, &alpha_old, &alpha_old2, &theta, &theta_old, &theta_old2}};
+  if (time_averages)
+  {
+    for (auto *v : time_averages->flow_fields ())
+      fields.flow.push_back (v);
+    for (auto *v : time_averages->scalar_fields ())
+      fields.scalars.push_back (v);
+  }
+  return fields;
 }
 
 template <int dim>
@@ -233,7 +245,14 @@ void TwoFluidSolver<dim>::adapt_mesh ()
   // flags from the state, every field and its history moved with the mesh, then the
   // solids mass the coarsening lost given back (doc/theory.md, "Adaptive meshes")
   TimerOutput::Scope scope (timer, "adaptive refinement");
-  mesh_adaptation.prepare (state (), triangulation, {{&alpha, &alpha_old, &alpha_old2}});
+  // alpha_s at three levels and its time average keep their solids mass
+  std::vector<AlphaVector *> levels{&alpha, &alpha_old, &alpha_old2};
+  if (time_averages)
+    levels.push_back (time_averages->scalar_fields ()[0]);
+  mesh_adaptation.prepare (
+      state (),
+      triangulation,
+      std::vector<const AlphaVector *> (levels.begin (), levels.end ()));
   FieldTransfer<dim> transfer (flow_dof_handler, alpha_dof_handler);
   transfer.attach (transferred_fields (), false);
   bubble_analysis->prepare_for_mesh_change ();
@@ -241,8 +260,7 @@ void TwoFluidSolver<dim>::adapt_mesh ()
   setup_dofs ();
   transfer.receive (transferred_fields (), flow_owned, alpha_constraints, false);
   bubble_analysis->after_mesh_change ();
-  mesh_adaptation.restore_solids_mass (
-      state (), alpha_constraints, {{&alpha, &alpha_old, &alpha_old2}});
+  mesh_adaptation.restore_solids_mass (state (), alpha_constraints, levels);
 }
 
 template <int dim>
@@ -723,6 +741,7 @@ typename TwoFluidSolver<dim>::RunEnd TwoFluidSolver<dim>::run ()
     }
     analyse_bubbles ();
     record_ect ();
+    accumulate_averages ();
     // a checkpoint on the step count, the wall clock (rank 0's, for all) or SIGUSR1;
     // SIGTERM/SIGINT/SIGUSR2 write one and stop
     const SignalRequest request =

@@ -13,6 +13,7 @@
 #include <wetbed/core/mesh_parameters.h>
 #include <wetbed/core/momentum_form.h>
 #include <wetbed/core/spectrum_parameters.h>
+#include <wetbed/core/statistics_parameters.h>
 #include <wetbed/core/wet_particle_parameters.h>
 
 #include <map>
@@ -155,6 +156,7 @@ struct Parameters
   BubbleAnalysisParameters     bubble_analysis;
   SpectrumParameters           spectrum;
   EctSensorParameters          ect_sensor;
+  StatisticsParameters         statistics;
   BedMonitorParameters         bed_monitors;
   bool                         stabilization; // SUPG + outlet backflow terms
   // momentum equations/form: the weight of rho_k div(alpha_k u_k) u_k in the convection

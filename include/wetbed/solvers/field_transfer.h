@@ -15,9 +15,10 @@ namespace wetbed
 {
 /**
  * The fields that move with the mesh (adaptation) or are saved with it (checkpoint),
- * always in the same order: u_g, u_s, p' at t_{n+1}, t_n, t_{n-1}; alpha_s at the same
- * three levels, then Theta at the same three levels. Pointers to the solver's vectors:
- * what a transfer writes.
+ * always in the same order: u_g, u_s, p' at t_{n+1}, t_n, t_{n-1} (then the time
+ * averages' flow accumulators); alpha_s at the same three levels, Theta at the same
+ * three levels (then the time averages' scalar accumulators). Pointers to the solver's
+ * vectors: what a transfer writes.
  */
 template <int dim>
 struct TransferredFields
@@ -25,8 +26,8 @@ struct TransferredFields
   using BlockVector = dealii::TrilinosWrappers::MPI::BlockVector;
   using AlphaVector = dealii::LinearAlgebra::distributed::Vector<double>;
 
-  std::array<BlockVector *, 3> flow;
-  std::array<AlphaVector *, 6> scalars;
+  std::vector<BlockVector *> flow;
+  std::vector<AlphaVector *> scalars;
 };
 
 /**

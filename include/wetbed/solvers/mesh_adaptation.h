@@ -36,17 +36,18 @@ public:
   /** Flags the cells of `triangulation` (the state's mesh) for refinement and
    * coarsening from `state` and prepares the change (2:1 balance); remembers the
    * parents of the cells to be coarsened and the solids mass of each of
-   * `alpha_levels` (alpha_s^{n+1}, ^n, ^{n-1}); collective. */
+   * `alpha_levels` (alpha_s^{n+1}, ^n, ^{n-1}, and its time average when there is
+   * one); collective. */
   void prepare (const SolverState<dim>                            &state,
                 dealii::parallel::distributed::Triangulation<dim> &triangulation,
-                const std::array<const AlphaVector *, 3>          &alpha_levels);
+                const std::vector<const AlphaVector *>            &alpha_levels);
 
   /** After the mesh change, the new DoFs and the transfer (`state` on the new mesh,
    * `alpha_constraints` its hanging nodes): each of `alpha_levels` gets its solids mass
    * back from before the change; collective. */
   void restore_solids_mass (const SolverState<dim>                  &state,
                             const dealii::AffineConstraints<double> &alpha_constraints,
-                            const std::array<AlphaVector *, 3>      &alpha_levels) const;
+                            const std::vector<AlphaVector *>        &alpha_levels) const;
 
 private:
   void
@@ -64,6 +65,6 @@ private:
   // the CellIds of the parents of the cells flagged for coarsening (all ranks')
   std::set<std::string> coarsened;
   // the solids mass of alpha_s^{n+1}, ^n, ^{n-1} before the change
-  std::array<double, 3> masses{};
+  std::vector<double> masses;
 };
 } // namespace wetbed

@@ -18,6 +18,9 @@
 
 namespace wetbed
 {
+template <int dim>
+class TimeAverages;
+
 /**
  * A read-only view of the simulation after a step, what the postprocessors and the
  * time-step controller read (as ASPECT's SimulatorAccess): the discretisation, the
@@ -69,6 +72,8 @@ struct SolverState
   // the peak speeds of these fields (evaluate_wave_speeds), evaluated once for each new
   // state: the time-step controller and monitors.csv read the same
   WaveSpeeds wave_speeds;
+  // the time averages (subsection statistics); null when they are off
+  TimeAverages<dim> *time_averages;
 
   /** The solids mass (kg, per metre depth in 2D) of a field on the alpha_s space;
    * collective. */

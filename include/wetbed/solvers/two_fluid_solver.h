@@ -17,6 +17,7 @@
 #include <wetbed/postprocess/field_output.h>
 #include <wetbed/postprocess/monitors.h>
 #include <wetbed/postprocess/pressure_probe.h>
+#include <wetbed/postprocess/time_averages.h>
 #include <wetbed/solvers/checkpointing.h>
 #include <wetbed/solvers/divergence_checks.h>
 #include <wetbed/solvers/field_transfer.h>
@@ -171,6 +172,8 @@ private:
   void analyse_bubbles ();
   /** The ECT sensor's frames since the last accepted step, if it is enabled. */
   void record_ect ();
+  /** The last accepted step into the time averages, if they are on. */
+  void accumulate_averages ();
   /** spectrum.csv from monitors.csv (and ect_spectrum.csv from ect.csv), at the end of a
    * run that lasted past the spectrum start time (rank 0). */
   void write_spectra () const;
@@ -257,6 +260,8 @@ private:
   // the seed's instruments, when the case asks for them
   std::unique_ptr<PressureProbe<dim>> pressure_probe;
   std::unique_ptr<EctSensor<dim>>     ect_sensor;
+  // the time-averaged fields (subsection statistics), when asked for
+  std::unique_ptr<TimeAverages<dim>> time_averages;
   // the field files and their counters
   FieldOutput<dim> field_output;
   double           time, time_step, previous_time_step;
