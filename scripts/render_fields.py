@@ -7,8 +7,8 @@ usage: scripts/render_fields.py RUN_FOLDER [--field NAME] [--times T,T,...] [--c
 
 Reads the run's own field output: fields.xdmf with its fields_NNN.h5 files
 (`output/field format = hdf5` or `vtu and hdf5`) or, without them, the fields_NNN.pvtu
-records and their .vtu pieces (the default `vtu`; their times are the output number
-times `output/field interval`, the XDMF's are exact), and writes into OUT (default
+records and their .vtu pieces (the default `vtu`; their times from fields.pvd, 6
+digits), and writes into OUT (default
 RUN_FOLDER/pictures):
   <field>_t<time>.png   one snapshot per chosen time (--times, else --count times spread
                         evenly over the run, first and last output included; default 4)
@@ -125,12 +125,21 @@ def vtu_array(element, appended=None):
     return np.frombuffer(b"".join(out), dtype=kind)
 
 
+def pvd_times(folder):
+    """{pvtu file name: time} from the run's fields.pvd (empty without one)."""
+    path = os.path.join(folder, "fields.pvd")
+    if not os.path.exists(path):
+        return {}
+    return {d.get("file"): float(d.get("timestep")) for d in ElementTree.parse(path).getroot().iter("DataSet")}
+
+
 def vtu_frames(folder):
-    """(time, loader) of every fields_NNN.pvtu; the time is the output's index times the
-    run's field interval when parameters.prm has it (else the index)."""
+    """(time, loader) of every fields_NNN.pvtu; the time from fields.pvd, else the output's
+    index times the run's field interval when parameters.prm has it (else the index)."""
     import numpy as np
 
     records = sorted(glob.glob(os.path.join(folder, "fields_*.pvtu")))
+    times = pvd_times(folder)
     interval = None
     path = os.path.join(folder, "parameters.prm")
     if os.path.exists(path):
@@ -141,7 +150,7 @@ def vtu_frames(folder):
     frames = []
     for record in records:
         index = int(re.search(r"fields_(\d+)\.pvtu$", record).group(1))
-        time = index * interval if interval else float(index)
+        time = times.get(os.path.basename(record), index * interval if interval else float(index))
 
         def load(names, record=record, time=time):
             pieces = [p.get("Source") for p in ElementTree.parse(record).getroot().iter("Piece")]

@@ -878,11 +878,16 @@ elif check == "statistics":
             f"subsection statistics\n set time averages = true\n set start time = {start}\nend\n"
             "subsection checkpoint\n set interval = 7\n set at end = false\nend\n"
             "subsection output\n set field interval = 1e-9\n set monitor interval = 1\n"
-            " set field format = hdf5\nend\n")
+            " set field format = vtu and hdf5\nend\n")
     folder = os.path.join(work, "statistics")
     rows = run("quick_start_2d", over, 1, folder)
     frames = render_fields.hdf5_frames(folder)
     expect(len(frames) == len(rows), f"{len(frames)} field outputs, one per step ({len(rows)} monitor rows)")
+    # ParaView's time record of the VTU outputs: every output at its time (6 digits)
+    pvd = render_fields.pvd_times(folder)
+    expect(len(pvd) == len(rows) and all(abs(pvd[f"fields_{k:05d}.pvtu"] - r["time"]) <= 1e-6 * r["time"] + 1e-12
+                                         for k, r in enumerate(rows)),
+           f"fields.pvd lists the {len(pvd)} VTU outputs at their times")
     names = ["alpha_s", "alpha_s_mean", "alpha_s_variance", "granular_temperature", "granular_temperature_mean"]
     fields = [load(names).fields for _, load in frames]
     times = [r["time"] for r in rows]
@@ -915,6 +920,8 @@ elif check == "statistics":
     shutil.copytree(folder, half)
     run("quick_start_2d", over, 1, half, resume=True)
     resumed = render_fields.hdf5_frames(half)[-1][1](names).fields
+    expect(render_fields.pvd_times(half) == pvd and open(os.path.join(half, "fields.pvd")).read().count("<DataSet") == len(rows),
+           "resumed: fields.pvd the unbroken run's, without duplicates")
     difference = numpy.max(numpy.abs(resumed["alpha_s_mean"] - last["alpha_s_mean"]))
     difference_variance = numpy.max(numpy.abs(resumed["alpha_s_variance"] - last["alpha_s_variance"]))
     restart = re.search(r"at t = ([0-9.e+-]+)", run.stdout)

@@ -136,8 +136,8 @@ void OutputFolderLock::remove_previous_results ()
   for (const char *name : {"checkpoint", "checkpoint.previous", "checkpoint.partial"})
     fs::remove_all (folder + "/" + name, ignored);
   const std::regex fields (
-      "fields_[0-9]+(\\.[0-9]+)?\\.(pvtu|vtu|h5)|fields\\.xdmf|spectrum\\.csv|"
-      "failure_report\\.txt|parameters_resumed\\.prm");
+      "fields_[0-9]+(\\.[0-9]+)?\\.(pvtu|vtu|h5)|fields\\.(xdmf|pvd)|spectrum\\.csv|"
+      "ect_spectrum\\.csv|failure_report\\.txt|parameters_resumed\\.prm");
   for (const auto &entry : fs::directory_iterator (folder, ignored))
     if (entry.is_regular_file (ignored) &&
         std::regex_match (entry.path ().filename ().string (), fields))

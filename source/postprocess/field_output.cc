@@ -14,6 +14,7 @@
 #include <regex>
 #include <stdexcept>
 
+#include <sstream>
 namespace wetbed
 {
 using namespace dealii;
@@ -52,6 +53,49 @@ bool complete_vtu (const std::string &folder, const std::string &pvtu)
     if (!ends_with (folder + (*m)[1].str (), closing))
       return false;
   return pieces > 0;
+}
+/**
+ * fields.pvd, ParaView's time record of the VTU outputs: the entries of the existing
+ * record for the outputs before `index` (a resumed run's, cut back to its checkpoint; a
+ * new run starts at index 0 and drops them all), then (time, pvtu). Written beside the
+ * old one and renamed over it once whole; false if that failed.
+ */
+bool update_pvd_record (const std::string &folder,
+                        const unsigned int index,
+                        const double       time,
+                        const std::string &pvtu)
+{
+  const std::string                           path = folder + "fields.pvd";
+  std::vector<std::pair<double, std::string>> entries;
+  {
+    std::ifstream      in (path);
+    std::ostringstream text;
+    text << in.rdbuf ();
+    const std::regex dataset (
+        "timestep=\"([^\"]+)\"[^>]*file=\"fields_([0-9]+)\\.pvtu\"");
+    const std::string content = text.str ();
+    for (std::sregex_iterator it (content.begin (), content.end (), dataset), end;
+         it != end;
+         ++it)
+    {
+      const unsigned int earlier = std::stoul ((*it)[2].str ());
+      if (earlier < index)
+        entries.emplace_back (std::stod ((*it)[1].str ()),
+                              "fields_" + Utilities::int_to_string (earlier, 5) +
+                                  ".pvtu");
+    }
+  }
+  entries.emplace_back (time, pvtu);
+  {
+    std::ofstream out (path + ".partial");
+    DataOutBase::write_pvd_record (out, entries);
+    out.flush ();
+    if (!out)
+      return false;
+  }
+  std::error_code error;
+  std::filesystem::rename (path + ".partial", path, error);
+  return !error;
 }
 } // namespace
 
@@ -264,7 +308,11 @@ void FieldOutput<dim>::write_files (const DataOut<dim> &data_out,
   // every piece closed by now: rank 0 reads them
   if (written && parameters.output.vtu)
     written = Utilities::MPI::broadcast (
-        communicator, root ? complete_vtu (folder, pvtu) : true, 0);
+        communicator,
+        root ? complete_vtu (folder, pvtu) &&
+                   update_pvd_record (folder, count.output_index, time, pvtu)
+             : true,
+        0);
   if (written && root)
   {
     // the size of this output, for the room the next one needs
@@ -312,7 +360,8 @@ void FieldOutput<dim>::write_files (const DataOut<dim> &data_out,
       for (const auto &file : std::filesystem::directory_iterator (folder, error))
       {
         const std::string name = file.path ().filename ().string ();
-        if (name.rfind (stem + ".", 0) == 0 || name == "fields.xdmf.partial")
+        if (name.rfind (stem + ".", 0) == 0 || name == "fields.xdmf.partial" ||
+            name == "fields.pvd.partial")
           std::filesystem::remove (file.path (), error);
       }
     }

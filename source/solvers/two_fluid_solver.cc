@@ -742,6 +742,11 @@ typename TwoFluidSolver<dim>::RunEnd TwoFluidSolver<dim>::run ()
     analyse_bubbles ();
     record_ect ();
     accumulate_averages ();
+    // the fields before the checkpoint of the same step: its counters then include this
+    // output, which a resumed run would otherwise skip (and write the next one under its
+    // number)
+    if (field_output.due (time))
+      field_output.write (state ());
     // a checkpoint on the step count, the wall clock (rank 0's, for all) or SIGUSR1;
     // SIGTERM/SIGINT/SIGUSR2 write one and stop
     const SignalRequest request =
@@ -764,8 +769,6 @@ typename TwoFluidSolver<dim>::RunEnd TwoFluidSolver<dim>::run ()
             << ")" << std::endl;
       return RunEnd::stopped_by_signal;
     }
-    if (field_output.due (time))
-      field_output.write (state ());
     if (step_number % parameters.output.progress_interval == 0 ||
         time >= ts.end_time * (1 - 1e-12))
     {

@@ -41,8 +41,9 @@ public:
   /**
    * The new run's input and mesh are accepted and it replaces a previous run: removes
    * that run's checkpoint (checkpoint, checkpoint.previous, checkpoint.partial) and
-   * its field files, spectrum.csv, failure_report.txt and parameters_resumed.prm,
-   * which the new run would otherwise leave mixed with its own.
+   * its field files (with fields.xdmf and fields.pvd), spectrum.csv, ect_spectrum.csv,
+   * failure_report.txt and parameters_resumed.prm, which the new run would otherwise
+   * leave mixed with its own.
    */
   void remove_previous_results ();
 
