@@ -851,6 +851,14 @@ elif check == "seed_column":
            all(abs(float(a["alpha_s_slab"]) - float(b["alpha_s_slab"])) < 1e-9 for a, b in zip(resumed, ect)),
            f"resumed at t = {restart.group(1) if restart else '?'} s: {len(resumed)} frames equal to the unbroken run's")
     expect(len(list(csv.reader(open(os.path.join(half, "ect_images.csv"))))) == 8, "resumed: 7 images, no duplicate")
+    # the frames stacked in time, both runs side by side (the seed's Fig. 4)
+    picture = os.path.join(work, "seed_column_ect_stack.png")
+    if os.path.exists(picture):
+        os.remove(picture)
+    stacked = subprocess.run([sys.executable, os.path.join(source, "scripts", "ect_stack.py"), folder, half,
+                              "--labels", "unbroken,resumed", "--out", picture], capture_output=True, text=True)
+    expect(stacked.returncode == 0 and stacked.stdout.count("7 frames") == 2 and os.path.getsize(picture) > 10000,
+           f"scripts/ect_stack.py draws both runs: {stacked.stdout.strip().splitlines()[:2]} {stacked.stderr[-200:]}")
     # a name the .geo does not define is refused before anything is written
     bad = os.path.join(work, "seed_column_bad")
     shutil.rmtree(bad, ignore_errors=True)
