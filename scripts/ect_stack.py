@@ -19,15 +19,8 @@ import math
 import os
 import sys
 
-
-def ensure_matplotlib():
-    try:
-        import matplotlib  # noqa: F401
-        import numpy  # noqa: F401
-    except ImportError:
-        if os.path.exists("/usr/bin/python3") and os.path.realpath(sys.executable) != "/usr/bin/python3":
-            os.execv("/usr/bin/python3", ["/usr/bin/python3"] + sys.argv)
-        raise
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from plot_run import ensure_matplotlib  # noqa: E402
 
 
 def read_run(folder, start, end):
