@@ -14,45 +14,32 @@ deviation of alpha_s_slab and, if ect_spectrum.csv exists, its dominant frequenc
 Writes FILE (default ect_stack.png in the first run folder).
 Uses Debian's python3-matplotlib (re-executes under /usr/bin/python3 if needed)."""
 import argparse
-import csv
 import math
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_run import ensure_matplotlib  # noqa: E402
+from wetbed_results import ect, ensure_modules  # noqa: E402
 
 
 def read_run(folder, start, end):
-    """(times, diameter lines [frames x pixels], slab means) of the frames in [start, end]."""
+    """(times, diameter lines [frames x pixels], slab means, dominant frequency or None)
+    of the frames in [start, end]."""
     import numpy as np
-    path = os.path.join(folder, "ect_images.csv")
-    if not os.path.exists(path):
-        sys.exit(f"{path}: not found (enable subsection ECT sensor)")
-    with open(path) as f:
-        rows = list(csv.reader(f))
-    pixels = len(rows[0]) - 1
-    n = int(round(math.sqrt(pixels)))
-    if n * n != pixels:
-        sys.exit(f"{path}: {pixels} pixels a frame is not a square image")
-    data = np.array([[float(v) for v in row] for row in rows[1:]])
-    keep = (data[:, 0] >= start) & (data[:, 0] <= end)
-    data = data[keep]
-    images = data[:, 1:].reshape(len(data), n, n)  # [frame, second axis, first axis]
+    try:
+        sensor = ect(folder, start, end)
+    except ValueError as error:  # not a square image
+        sys.exit(str(error))
+    for name, key in (("ect_images.csv", "images"), ("ect.csv", "signal")):
+        if sensor is None or sensor[key] is None:
+            sys.exit(f"{os.path.join(folder, name)}: not found (enable subsection ECT sensor)")
+    n = sensor["resolution"]
+    # [frame, second axis, first axis]
+    images = np.array(sensor["images"], dtype=float).reshape(len(sensor["times"]), n, n)
     middle = images[:, n // 2, :] if n % 2 else 0.5 * (images[:, n // 2 - 1, :] + images[:, n // 2, :])
-    with open(os.path.join(folder, "ect.csv")) as f:
-        signal = [r for r in csv.DictReader(f) if start <= float(r["time"]) <= end]
-    return data[:, 0], middle, np.array([float(r["alpha_s_slab"]) for r in signal])
-
-
-def dominant_frequency(folder):
-    path = os.path.join(folder, "ect_spectrum.csv")
-    if not os.path.exists(path):
-        return None
-    for line in open(path):
-        if line.startswith("# alpha_s_slab: dominant frequency"):
-            return float(line.split("dominant frequency")[1].split()[0])
-    return None
+    spectrum = sensor["spectrum"]
+    frequency = spectrum["dominant"].get("alpha_s_slab") if spectrum is not None else None
+    return np.array(sensor["times"]), middle, np.array(sensor["signal"]["alpha_s_slab"]), frequency
 
 
 def main():
@@ -63,7 +50,7 @@ def main():
     parser.add_argument("--end", type=float, default=math.inf)
     parser.add_argument("--out", default="")
     args = parser.parse_args()
-    ensure_matplotlib()
+    ensure_modules("matplotlib")
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -74,7 +61,7 @@ def main():
     figure, axes = plt.subplots(2, len(args.runs), figsize=(4.5 * len(args.runs), 6), squeeze=False,
                                 gridspec_kw={"height_ratios": [3, 1]})
     for k, (run, label) in enumerate(zip(args.runs, labels)):
-        times, lines, slab = read_run(run, args.start, args.end)
+        times, lines, slab, f = read_run(run, args.start, args.end)
         if len(times) == 0:
             sys.exit(f"{run}: no ECT frame in [{args.start}, {args.end}] s")
         top, bottom = axes[0][k], axes[1][k]
@@ -87,7 +74,6 @@ def main():
         bottom.set_xlabel("time (s)")
         bottom.set_ylabel("slab mean alpha_s")
         figure.colorbar(picture, ax=top, label="alpha_s")
-        f = dominant_frequency(run)
         print(f"{label}: {len(times)} frames, alpha_s_slab mean {np.mean(slab):.4f}, std {np.std(slab):.4f}"
               + (f", dominant frequency {f:.3g} Hz" if f is not None else ""))
     figure.tight_layout()

@@ -4,7 +4,8 @@
 usage: scripts/plot_run.py RUN_FOLDER [--start T] [--out FOLDER] [--plane H]
 
 Reads monitors.csv, bubbles.csv, bubble_summary.csv, bubble_events.csv and spectrum.csv
-(those present) and writes into OUT (default RUN_FOLDER/plots):
+(those present; scripts/wetbed_results.py reads them) and writes into OUT (default
+RUN_FOLDER/plots):
   fluidization.png   FI and pressure drop vs time
   bed_height.png     bed height (95% of the solids below) and plane-averaged alpha_s
   bubble_sizes.png   distribution of bubble equivalent diameters after T
@@ -18,38 +19,12 @@ rises through H per second, splitting and coalescence events per second, dominan
 frequencies.
 Uses Debian's python3-matplotlib (re-executes under /usr/bin/python3 if needed)."""
 import argparse
-import csv
 import math
 import os
 import sys
 
-
-def ensure_matplotlib():
-    try:
-        import matplotlib  # noqa: F401
-    except ImportError:
-        if os.path.exists("/usr/bin/python3") and os.path.realpath(sys.executable) != "/usr/bin/python3":
-            os.execv("/usr/bin/python3", ["/usr/bin/python3"] + sys.argv)
-        raise
-
-
-def read_csv(path):
-    """Columns of a CSV file as lists of floats (strings where not numeric), skipping
-    '#' comment lines; None if the file is missing."""
-    if not os.path.exists(path):
-        return None
-    with open(path) as f:
-        rows = list(csv.reader(line for line in f if not line.startswith("#")))
-    if not rows:
-        return None
-    columns = {name: [] for name in rows[0]}
-    for row in rows[1:]:
-        for name, value in zip(rows[0], row):
-            try:
-                columns[name].append(float(value) if value != "" else math.nan)
-            except ValueError:
-                columns[name].append(value)
-    return columns
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from wetbed_results import bubbles, ensure_modules, monitors, spectrum  # noqa: E402
 
 
 def time_average(t, y, start):
@@ -63,7 +38,7 @@ def time_average(t, y, start):
 
 def statistics(folder, start=1.0, plane=None):
     """The bed and bubble statistics of a run folder from `start` on, as a dict."""
-    m = read_csv(os.path.join(folder, "monitors.csv"))
+    m = monitors(folder)
     if m is None:
         raise SystemExit(f"plot_run: no monitors.csv in {folder}")
     t = m["time"]
@@ -75,8 +50,8 @@ def statistics(folder, start=1.0, plane=None):
     if plane is None:
         plane = float(planes[0][len("alpha_s_plane_"):]) if planes else 0.076
     s["plane"] = plane
-    b = read_csv(os.path.join(folder, "bubbles.csv"))
-    summary = read_csv(os.path.join(folder, "bubble_summary.csv"))
+    found = bubbles(folder)
+    b, summary = found["bubbles"], found["summary"]
     if summary is not None and summary["time"]:
         window = [i for i, x in enumerate(summary["time"]) if x >= start]
         duration = summary["time"][-1] - start if window else math.nan
@@ -109,23 +84,22 @@ def statistics(folder, start=1.0, plane=None):
         if summary is not None and summary["time"][-1] > start:
             s["bubble_frequency"] = len(counted) / (summary["time"][-1] - start)
             s["centroid_crossings_per_second"] = crossings / (summary["time"][-1] - start)
-    spectrum = os.path.join(folder, "spectrum.csv")
-    if os.path.exists(spectrum):
-        for line in open(spectrum):
-            if line.startswith("# "):
-                name, rest = line[2:].split(": dominant frequency ")
-                s["dominant_frequency_" + name] = float(rest.split()[0])
+    found = spectrum(folder)
+    for name, frequency in (found["dominant"] if found is not None else {}).items():
+        s["dominant_frequency_" + name] = frequency
     return s
 
 
 def plot(folder, out, start, plane):
-    ensure_matplotlib()
+    ensure_modules("matplotlib")
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
+    m = monitors(folder)
+    if m is None:
+        raise SystemExit(f"plot_run: no monitors.csv in {folder}")
     os.makedirs(out, exist_ok=True)
-    m = read_csv(os.path.join(folder, "monitors.csv"))
     t = m["time"]
     written = []
 
@@ -162,7 +136,7 @@ def plot(folder, out, start, plane):
         fig.savefig(os.path.join(out, "bubble_sizes.png"), dpi=110)
         written.append("bubble_sizes.png")
         plt.close(fig)
-    summary = read_csv(os.path.join(folder, "bubble_summary.csv"))
+    summary = bubbles(folder)["summary"]
     if summary is not None and summary["time"]:
         fig, ax = plt.subplots(2, 1, figsize=(8, 6), sharex=True)
         ax[0].plot(summary["time"], summary["bubbles"], lw=0.8)
@@ -176,13 +150,14 @@ def plot(folder, out, start, plane):
         fig.savefig(os.path.join(out, "bubble_count.png"), dpi=110)
         written.append("bubble_count.png")
         plt.close(fig)
-    spectrum = read_csv(os.path.join(folder, "spectrum.csv"))
-    if spectrum is not None:
+    found = spectrum(folder)
+    if found is not None:
+        psd = found["columns"]
         fig, ax = plt.subplots(figsize=(7, 4))
-        for name in [n for n in spectrum if n.startswith("psd_")]:
-            values = spectrum[name]
+        for name in [n for n in psd if n.startswith("psd_")]:
+            values = psd[name]
             peak = max(values[1:])
-            ax.semilogy(spectrum["frequency"][1:], [v / peak for v in values[1:]], lw=0.8, label=name[4:])
+            ax.semilogy(psd["frequency"][1:], [v / peak for v in values[1:]], lw=0.8, label=name[4:])
         ax.set_xlim(0, 20)
         ax.set_ylim(1e-4, 2)
         ax.set_xlabel("frequency (Hz)")

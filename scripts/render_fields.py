@@ -8,7 +8,7 @@ usage: scripts/render_fields.py RUN_FOLDER [--field NAME] [--times T,T,...] [--c
 Reads the run's own field output: fields.xdmf with its fields_NNN.h5 files
 (`output/field format = hdf5` or `vtu and hdf5`) or, without them, the fields_NNN.pvtu
 records and their .vtu pieces (the default `vtu`; their times from fields.pvd, 6
-digits), and writes into OUT (default
+digits; read by scripts/wetbed_results.py), and writes into OUT (default
 RUN_FOLDER/pictures):
   <field>_t<time>.png   one snapshot per chosen time (--times, else --count times spread
                         evenly over the run, first and last output included; default 4)
@@ -26,170 +26,32 @@ coordinate). --size sets the pixel size of the snapshots (default 360x900 for a 
 Uses Debian's python3-matplotlib and python3-h5py (re-executes under /usr/bin/python3
 if needed); VTU reading needs neither h5py nor VTK."""
 import argparse
-import base64
-import glob
-import math
 import os
 import re
 import sys
-import xml.etree.ElementTree as ElementTree
-import zlib
 
-
-def ensure_modules():
-    try:
-        import matplotlib  # noqa: F401
-        import numpy  # noqa: F401
-    except ImportError:
-        if os.path.exists("/usr/bin/python3") and os.path.realpath(sys.executable) != "/usr/bin/python3":
-            os.execv("/usr/bin/python3", ["/usr/bin/python3"] + sys.argv)
-        raise
-
-
-class Frame:
-    """One field output: points (n x 3), cells (m x 2^dim vertex indices, counter-
-    clockwise quadrilaterals in 2D, VTK-ordered hexahedra in 3D) and point fields."""
-
-    def __init__(self, time, points, cells, fields):
-        self.time, self.points, self.cells, self.fields = time, points, cells, fields
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+# the field readers live in wetbed_results.py; their names here as before (tests and
+# benchmarks call render_fields.hdf5_frames, pvd_times, ...)
+from wetbed_results import (Frame, ensure_modules, frames, hdf5_frames, parameter,  # noqa: E402,F401
+                            pvd_times, run_parameters, vtu_array, vtu_frames)
 
 
 def read_run_parameters(folder):
     """The run's gravity vector and maximum packing from parameters.prm (None where absent)."""
-    gravity, packing = None, None
-    path = os.path.join(folder, "parameters.prm")
-    if os.path.exists(path):
-        for line in open(path):
-            m = re.match(r"\s*set\s+gravity\s*=\s*(.*)", line)
-            if m:
-                gravity = [float(v) for v in m.group(1).split("#")[0].split(",")]
-            m = re.match(r"\s*set\s+maximum packing\s*=\s*(.*)", line)
-            if m:
-                packing = float(m.group(1).split("#")[0])
-    return gravity, packing
-
-
-def hdf5_frames(folder):
-    """(time, loader) of every output listed in fields.xdmf."""
-    import numpy as np
-    import h5py
-
-    root = ElementTree.parse(os.path.join(folder, "fields.xdmf")).getroot()
-    frames = []
-    for grid in root.iter("Grid"):
-        if grid.get("GridType") != "Uniform":
-            continue
-        time = float(grid.find("Time").get("Value"))
-        geometry = grid.find("Geometry/DataItem").text.strip()
-        topology = grid.find("Topology/DataItem").text.strip()
-        attributes = {a.get("Name"): a.find("DataItem").text.strip() for a in grid.findall("Attribute")}
-
-        def load(names, geometry=geometry, topology=topology, attributes=attributes, time=time):
-            def dataset(reference):
-                file, name = reference.split(":")
-                with h5py.File(os.path.join(folder, file), "r") as h5:
-                    return h5[name.lstrip("/")][()]
-
-            points = np.asarray(dataset(geometry), dtype=float)
-            if points.shape[1] == 2:
-                points = np.column_stack([points, np.zeros(len(points))])
-            fields = {}
-            for n in names:
-                if n in attributes:
-                    fields[n] = np.asarray(dataset(attributes[n]), dtype=float).reshape(len(points), -1)[:, 0]
-            return Frame(time, points, np.asarray(dataset(topology), dtype=np.int64), fields)
-
-        frames.append((time, load))
-    return frames
-
-
-def vtu_array(element, appended=None):
-    """The values of a deal.II VTU DataArray (ascii, or base64 zlib-compressed binary)."""
-    import numpy as np
-
-    kind = {"Float32": np.float32, "Float64": np.float64, "Int32": np.int32, "Int64": np.int64,
-            "UInt8": np.uint8, "UInt32": np.uint32, "UInt64": np.uint64}[element.get("type")]
-    text = (element.text or "").strip()
-    if element.get("format") == "ascii":
-        return np.array(text.split(), dtype=kind)
-    raw = base64.b64decode(text[:24])
-    header = np.frombuffer(raw[:16], dtype=np.uint32)  # blocks, block size, last size, first compressed size
-    blocks = int(header[0])
-    header_chars = 4 * math.ceil((3 + blocks) * 4 / 3)
-    sizes = np.frombuffer(base64.b64decode(text[:header_chars])[: (3 + blocks) * 4], dtype=np.uint32)[3:]
-    data = base64.b64decode(text[header_chars:])
-    out, offset = [], 0
-    for size in sizes:
-        out.append(zlib.decompress(data[offset: offset + int(size)]))
-        offset += int(size)
-    return np.frombuffer(b"".join(out), dtype=kind)
-
-
-def pvd_times(folder):
-    """{pvtu file name: time} from the run's fields.pvd (empty without one)."""
-    path = os.path.join(folder, "fields.pvd")
-    if not os.path.exists(path):
-        return {}
-    return {d.get("file"): float(d.get("timestep")) for d in ElementTree.parse(path).getroot().iter("DataSet")}
-
-
-def vtu_frames(folder):
-    """(time, loader) of every fields_NNN.pvtu; the time from fields.pvd, else the output's
-    index times the run's field interval when parameters.prm has it (else the index)."""
-    import numpy as np
-
-    records = sorted(glob.glob(os.path.join(folder, "fields_*.pvtu")))
-    times = pvd_times(folder)
-    interval = None
-    path = os.path.join(folder, "parameters.prm")
-    if os.path.exists(path):
-        for line in open(path):
-            m = re.match(r"\s*set\s+field interval\s*=\s*(.*)", line)
-            if m:
-                interval = float(m.group(1).split("#")[0])
-    frames = []
-    for record in records:
-        index = int(re.search(r"fields_(\d+)\.pvtu$", record).group(1))
-        time = times.get(os.path.basename(record), index * interval if interval else float(index))
-
-        def load(names, record=record, time=time):
-            pieces = [p.get("Source") for p in ElementTree.parse(record).getroot().iter("Piece")]
-            all_points, all_cells, fields, offset = [], [], {n: [] for n in names}, 0
-            for piece in pieces:
-                root = ElementTree.parse(os.path.join(os.path.dirname(record), piece)).getroot()
-                for p in root.iter("Piece"):
-                    points = vtu_array(p.find("Points/DataArray")).astype(float).reshape(-1, 3)
-                    cell_data = {a.get("Name"): a for a in p.find("Cells").findall("DataArray")}
-                    connectivity = vtu_array(cell_data["connectivity"]).astype(np.int64)
-                    offsets = vtu_array(cell_data["offsets"]).astype(np.int64)
-                    per_cell = int(offsets[0]) if len(offsets) else 4
-                    all_cells.append(connectivity.reshape(-1, per_cell) + offset)
-                    all_points.append(points)
-                    arrays = {a.get("Name"): a for a in p.find("PointData").findall("DataArray")}
-                    for n in names:
-                        if n in arrays:
-                            fields[n].append(vtu_array(arrays[n]).astype(float).reshape(len(points), -1)[:, 0])
-                    offset += len(points)
-            cells = np.vstack(all_cells)
-            return Frame(time, np.vstack(all_points), cells,
-                         {n: np.concatenate(v) for n, v in fields.items() if v})
-
-        frames.append((time, load))
-    return frames
+    values = run_parameters(folder)
+    gravity, packing = parameter(values, "gravity"), parameter(values, "maximum packing")
+    return ([float(v) for v in gravity.split(",")] if gravity is not None else None,
+            float(packing) if packing is not None else None)
 
 
 def find_frames(folder):
-    if os.path.exists(os.path.join(folder, "fields.xdmf")):
-        try:
-            import h5py  # noqa: F401
-            return hdf5_frames(folder)
-        except ImportError:
-            pass
-    frames = vtu_frames(folder)
-    if not frames:
+    """The run's field outputs (wetbed_results.frames); exits without any."""
+    found = frames(folder)
+    if not found:
         sys.exit(f"render_fields: no field output in {folder} (fields.xdmf or fields_*.pvtu): "
                  "the case needs `output/field interval` > 0")
-    return frames
+    return found
 
 
 class View:
@@ -360,7 +222,7 @@ def main():
     parser.add_argument("--iso", type=float, default=0.8)
     parser.add_argument("--no-iso", action="store_true")
     args = parser.parse_args()
-    ensure_modules()
+    ensure_modules("matplotlib", "numpy")
     import matplotlib
 
     matplotlib.use("Agg")

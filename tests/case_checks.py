@@ -4,7 +4,7 @@
 usage: case_checks.py CHECK WETBED SOURCE_DIR WORK_DIR
 CHECK: ergun | split_inlet | wall_groups | hydrostatic | packed | settling | ramp | kinetic | ranks |
        monitor_interval | signals | disk_full | bubbling | hdf5 | restart | amr | failure | bubbles |
-       matrix_free | divergence | column_3d | seed_column | statistics
+       matrix_free | divergence | column_3d | seed_column | statistics | profiles
 """
 import csv
 import math
@@ -105,6 +105,54 @@ elif check == "split_inlet":
     for name in ("gas_speed_max", "distributor_support", "fluidization_index"):
         worst = max(abs(a[name] - b[name]) / max(abs(a[name]), 1e-12) for a, b in zip(reference, rows))
         expect(worst < 1e-8, f"{name} agrees (max rel. difference {worst:.1e} < 1e-8)")
+    # inlets per group (issue 50). The monitored inlet velocity is the volume flow over
+    # the inlet area: with 0.1 m/s through the left 2 cm and 0.3 through the right 3 cm,
+    # (0.02 * 0.1 + 0.03 * 0.3) / 0.05 = 0.22 m/s. A velocity linear in x is imposed
+    # exactly at the Q2 nodes (read on the inlet with a profile line), a mass flow rate
+    # of rho_g U A gives the run at U, and a direction tilts the inflow.
+    def inlets(text, name, lines=""):
+        rows = run("ergun_column", split + "subsection boundary conditions\n" + text + "end\n"
+                   + (f"subsection statistics\n set lines = {lines}\nend\n" if lines else ""),
+                   folder=os.path.join(work, "split_inlet_" + name))
+        profile = None
+        if lines:
+            profile = list(csv.DictReader(open(os.path.join(work, "split_inlet_" + name, "statistics", "line_inlet.csv"))))
+            profile = [{k: float(v) for k, v in r.items()} for r in profile if float(r["time"]) == rows[-1]["time"]]
+        return rows, profile
+    bottom = "inlet: 0.0005 0, 0.0495 0, 50"
+    rows, line = inlets(" set inlet velocities = inlet_left: 0.1; inlet_right: 0.3\n", "two_speeds", bottom)
+    mean = rows[-1]["inlet_superficial_velocity"]
+    expect(abs(mean - 0.22) < 1e-12, f"two inlet velocities: the inlet velocity monitored is their area mean {mean:.15f} (0.22)")
+    clear = [r for r in line if r["x"] < 0.01 or r["x"] > 0.03]  # faces that do not touch x = 0.02
+    worst = max(abs(r["u_g_y"] - (0.1 if r["x"] < 0.02 else 0.3) / 0.55) for r in clear)
+    expect(len(clear) == 30 and worst < 1e-9, f"the gas enters at U/alpha_g of its group ({len(clear)} points, max error {worst:.1e})")
+    rows, line = inlets(" set inlet velocities = inlet_left: 0.1 + 2*x; inlet_right: 0.3\n", "linear", bottom)
+    mean = rows[-1]["inlet_superficial_velocity"]
+    worst = max(abs(r["u_g_y"] - (0.1 + 2 * r["x"]) / 0.55) for r in line if r["x"] < 0.01)
+    expect(abs(mean - 0.228) < 1e-12 and worst < 1e-9,
+           f"U = 0.1 + 2x on the left: mean {mean:.15f} (0.228), at the points {worst:.1e} from (0.1 + 2x)/alpha_g")
+    rows, _ = inlets(f" set inlet mass flow rates = inlet_right: {1.2 * 0.2 * 0.03!r}\n", "mass_flow")
+    same_monitors(reference, rows, "a mass flow rate of rho_g U A on the right vs U", 1e-12)
+    inflow, outflow, expected = rows[-1]["gas_inflow"], rows[-1]["gas_outflow"], 1.2 * 0.2 * 0.05
+    expect(abs(inflow / expected - 1) < 1e-10 and abs(outflow / expected - 1) < 1e-10,
+           f"the gas mass flow integrated over the inlets {inflow:.15f} kg/s/m and the outlet {outflow:.15f} "
+           f"= rho_g U A = {expected:.15f} (rel. {abs(inflow / expected - 1):.1e}, {abs(outflow / expected - 1):.1e} < 1e-10)")
+    rows, line = inlets(" set inlet directions = inlet_right: 0.6 0.8\n"
+                        f" set inlet mass flow rates = inlet_right: {1.2 * 0.2 * 0.03 * 0.8!r}\n", "tilted", bottom)
+    right = [r for r in line if 0.03 < r["x"] < 0.04]  # clear of the wall's corner node
+    # the node at x = 2 cm is both groups': it takes the left group's vertical superficial
+    # velocity 0.2 (not 0.16), which adds its Simpson weight h/6 of the right group's
+    # first face, 1.2 * 0.01/6 * 0.04 kg/s/m, to the mass flow rates
+    inflow, expected = rows[-1]["gas_inflow"], 1.2 * (0.02 * 0.2 + 0.03 * 0.8 * 0.2)
+    shared = 1.2 * 0.01 / 6 * (0.2 - 0.16)
+    expect(abs(inflow - expected - shared) < 1e-12 * expected,
+           f"tilted: gas inflow {inflow:.15f} kg/s/m = the mass flow rates {expected:.6f} + the shared node's "
+           f"{shared:.3e} (difference {abs(inflow - expected - shared):.1e})")
+    worst = max(max(abs(r["u_g_x"] - 0.6 * 0.2 / 0.55), abs(r["u_g_y"] - 0.8 * 0.2 / 0.55)) for r in right)
+    mean = rows[-1]["inlet_superficial_velocity"]
+    expect(len(right) == 10 and worst < 1e-9 and abs(mean - 0.176) < 1e-12,
+           f"tilted 0.6, 0.8 with the mass flow of 0.2 m/s along it: u_g = (0.6, 0.8) U/alpha_g on the right "
+           f"(max error {worst:.1e}), inflow (0.02 * 0.2 + 0.03 * 0.8 * 0.2) / 0.05 = {mean:.15f} (0.176)")
 elif check == "wall_groups":
     # a wall condition per wall group: the kinetic-theory bed (Johnson-Jackson walls,
     # algebraic Theta) with its side walls as two groups (tests/meshes/
@@ -802,7 +850,9 @@ elif check == "seed_column":
     instruments = ("subsection bed monitors\n set pressure probe height = 0.01\nend\n"
                    "subsection ECT sensor\n set enabled = true\n set centre height = 0.03\n set thickness = 0.02\n"
                    " set frame rate = 1000\n set resolution = 8\n set levels = 2\nend\n"
-                   "subsection checkpoint\n set at end = false\n set interval = 4\nend\n")
+                   "subsection checkpoint\n set at end = false\n set interval = 4\nend\n"
+                   "subsection statistics\n set radial profile heights = 0.03\n set plane heights = 0.03\n"
+                   " set plane resolution = 8\nend\n")
     end = "subsection time stepping\n set end time = {}\nend\n"
     folder = os.path.join(work, "seed_column")
     rows = run("column_3d", geometry + instruments + end.format(0.006), 2, folder)
@@ -851,6 +901,29 @@ elif check == "seed_column":
            all(abs(float(a["alpha_s_slab"]) - float(b["alpha_s_slab"])) < 1e-9 for a, b in zip(resumed, ect)),
            f"resumed at t = {restart.group(1) if restart else '?'} s: {len(resumed)} frames equal to the unbroken run's")
     expect(len(list(csv.reader(open(os.path.join(half, "ect_images.csv"))))) == 8, "resumed: 7 images, no duplicate")
+    # issue 50: a radial profile (20 radii, each the mean of 16 azimuths) and a plane map
+    # of the bed at 3 cm, written at the end; the resumed run's files equal these
+    def profile(where, name):
+        return [{k: float(v) for k, v in r.items()} for r in csv.DictReader(open(os.path.join(where, "statistics", name)))]
+    radial_all, plane_all = profile(folder, "radial_at_0.03m.csv"), profile(folder, "plane_at_0.03m.csv")
+    times = sorted(set(r["time"] for r in radial_all))
+    expect(times == [0, rows[-1]["time"]], f"profiles at the field outputs t = 0 and the end: {times}")
+    radial = [r for r in radial_all if r["time"] == times[-1]]
+    plane = [r for r in plane_all if r["time"] == times[-1]]
+    radii = [r["r"] for r in radial]
+    expect(len(radial) == 20 and all(abs(r - (k + 0.5) * 0.025 / 20) < 1e-9 for k, r in enumerate(radii)),
+           f"radial profile: {len(radial)} radii {radii[0]:.5f} .. {radii[-1]:.5f} m at the end")
+    inside = [r["alpha_s"] for r in plane if not math.isnan(r["alpha_s"])]
+    expect(all(0.5 < r["alpha_s"] < 0.61 for r in radial) and len(plane) == 64 and 40 <= len(inside) < 64 and
+           all(0.5 < a < 0.61 for a in inside) and all(abs(r["z"] - 0.03) < 1e-12 for r in plane),
+           f"the bed at 3 cm: alpha_s {min(r['alpha_s'] for r in radial):.4f} .. {max(r['alpha_s'] for r in radial):.4f} "
+           f"across the radius, {len(inside)} of 64 map points inside the column")
+    def same_rows(a, b):  # NaN (outside the domain) equal to NaN
+        return len(a) == len(b) and all(x.keys() == y.keys() and all(
+            (math.isnan(x[k]) and math.isnan(y[k])) or abs(x[k] - y[k]) < 1e-9 for k in x) for x, y in zip(a, b))
+    expect(same_rows(profile(half, "radial_at_0.03m.csv"), radial_all) and
+           same_rows(profile(half, "plane_at_0.03m.csv"), plane_all),
+           "resumed: the profile files as the unbroken run's (no duplicate rows)")
     # the frames stacked in time, both runs side by side (the seed's Fig. 4)
     picture = os.path.join(work, "seed_column_ect_stack.png")
     if os.path.exists(picture):
@@ -955,6 +1028,74 @@ elif check == "statistics":
     expect(changes >= 3 and abs(integral("alpha_s_mean") / mass - 1) < 1e-6 and abs(integral("alpha_s") / mass - 1) < 1e-6,
            f"{changes} mesh changes: the mean alpha_s holds {integral('alpha_s_mean') / mass - 1:.1e} "
            f"of the solids mass more than it (alpha_s itself {integral('alpha_s') / mass - 1:.1e})")
+elif check == "profiles":
+    # issue 50: profiles and maps of the time averages, on the steady Ergun column (solids
+    # held at alpha_s = 0.45, gas at U/alpha_g, p' linear): the means are the fields in
+    # closed form and every standard deviation 0. Written at each field output (every
+    # 2 ms) and at the end; a run resumed from its mid-run checkpoint rewrites nothing
+    # twice.
+    over = ("subsection time stepping\n set end time = 5e-3\nend\n"
+            "subsection statistics\n set time averages = true\n set start time = 1e-3\n"
+            " set lateral profile heights = 0.15\n set plane heights = 0.1, 0.2\n set plane resolution = 10\n"
+            " set lines = axis: 0.025 0.01, 0.025 0.29, 15\nend\n"
+            "subsection output\n set field interval = 2e-3\nend\n"
+            "subsection checkpoint\n set interval = 3\n set at end = false\nend\n")
+    folder = os.path.join(work, "profiles")
+    rows = run("ergun_column", over, 1, folder)
+
+    def profile(where, name):
+        return [{k: float(v) for k, v in r.items()} for r in csv.DictReader(open(os.path.join(where, "statistics", name)))]
+    axis = profile(folder, "line_axis.csv")
+    times = sorted(set(r["time"] for r in axis))
+    expect(len(axis) == 3 * 15 and all(abs(a - b) < 1e-12 for a, b in zip(times, (0.002, 0.004, 0.005))),
+           f"the axis line: {len(axis)} rows at t = {times} (the outputs at 2 and 4 ms and the end; none before the start)")
+    U, a_g = 0.2, 0.55
+    worst = max(max(abs(r["alpha_s_mean"] - 0.45), abs(r["u_g_y_mean"] - U / a_g), abs(r["u_g_x_mean"]),
+                    abs(r["u_s_x_mean"]), abs(r["u_s_y_mean"])) for r in axis)
+    deviation = max(r[k] for r in axis for k in r if k.endswith("_std"))
+    expect(worst < 1e-9 and deviation < 1e-6,
+           f"means = the steady fields (alpha_s 0.45, u_g = U/alpha_g, u_s = 0; max error {worst:.1e}), "
+           f"standard deviations at most {deviation:.1e}")
+    last = [r for r in axis if r["time"] == times[-1]]
+    slope = (last[-1]["p_mean"] - last[0]["p_mean"]) / (last[-1]["s"] - last[0]["s"])
+    expected = -rows[-1]["pressure_drop"] / 0.3
+    linear = max(abs(r["p_mean"] - (last[0]["p_mean"] + slope * r["s"])) for r in last)
+    expect(abs(slope / expected - 1) < 1e-8 and linear < 1e-8 * abs(expected),
+           f"p' along the axis: slope {slope:.6f} Pa/m = -pressure drop / H ({expected:.6f}), linear to {linear:.1e}")
+    lateral = [r for r in profile(folder, "lateral_at_0.15m.csv") if r["time"] == times[-1]]
+    positions = [r["position"] for r in lateral]
+    expect(len(lateral) == 20 and all(abs(x - (k + 0.5) * 0.05 / 20) < 1e-12 for k, x in enumerate(positions)) and
+           max(abs(r["alpha_s_mean"] - 0.45) for r in lateral) < 1e-9,
+           f"lateral profile at 15 cm: 20 points {positions[0]:.5f} .. {positions[-1]:.5f} m, alpha_s_mean 0.45")
+    plane = [r for r in profile(folder, "plane_at_0.2m.csv") if r["time"] == times[-1]]
+    expect(len(plane) == 10 and all(abs(r["y"] - 0.2) < 1e-12 and abs(r["u_g_y_mean"] - U / a_g) < 1e-9 for r in plane),
+           f"plane at 20 cm (a line in 2D): {len(plane)} points, u_g_y_mean = U/alpha_g")
+    # a prescribed periodic signal: U(t) = U0 (1 + A sin(2 pi t / 4 ms)) moves the gas of
+    # the fixed bed at U(t)/alpha_g; averaged over two periods (steps of 1 ms from 1 ms on)
+    # the mean is U0/alpha_g and the standard deviation A U0/alpha_g/sqrt(2), exactly
+    periodic = os.path.join(work, "profiles_periodic")
+    run("ergun_column", "subsection time stepping\n set end time = 9e-3\nend\n"
+        "subsection boundary conditions\n set inlet superficial velocity = 0.2*(1 + 0.5*sin(2*pi*t/0.004))\nend\n"
+        "subsection statistics\n set time averages = true\n set start time = 1e-3\n"
+        " set lines = axis: 0.025 0.01, 0.025 0.29, 15\nend\n", 1, periodic)
+    ends = [r for r in profile(periodic, "line_axis.csv") if abs(r["time"] - 9e-3) < 1e-12]
+    mean_error = max(abs(r["u_g_y_mean"] - U / a_g) for r in ends)
+    std_error = max(abs(r["u_g_y_std"] - 0.5 * U / a_g / math.sqrt(2)) for r in ends)
+    expect(len(ends) == 15 and mean_error < 1e-9 and std_error < 1e-9,
+           f"periodic inflow: u_g_y mean {ends[0]['u_g_y_mean']:.10f} (U0/alpha_g {U / a_g:.10f}), standard deviation "
+           f"{ends[0]['u_g_y_std']:.10f} (A U0/alpha_g/sqrt 2 {0.5 * U / a_g / math.sqrt(2):.10f}); errors {mean_error:.1e}, {std_error:.1e}")
+    # resumed from the checkpoint of step 3 in a copy of the folder
+    half = os.path.join(work, "profiles_resumed")
+    shutil.rmtree(half, ignore_errors=True)
+    shutil.copytree(folder, half)
+    run("ergun_column", over, 1, half, resume=True)
+    restart = re.search(r"at t = ([0-9.e+-]+)", run.stdout)
+    resumed = profile(half, "line_axis.csv")
+    difference = max(abs(a[k] - b[k]) for a, b in zip(axis, resumed) for k in a)
+    expect(restart is not None and abs(float(restart.group(1)) - 0.003) < 1e-9 and len(resumed) == len(axis)
+           and difference < 1e-9,
+           f"resumed at t = {restart.group(1) if restart else '?'} s: {len(resumed)} rows as the unbroken run's "
+           f"(difference {difference:.1e})")
 else:
     sys.exit(f"unknown check {check}")
 

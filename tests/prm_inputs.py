@@ -64,9 +64,12 @@ def with_mesh(text, prm_file):
 
 
 # 1. every shipped case parses and runs a few steps; the large seed column (35,640 cells)
-# on a coarser mesh of the same column: its parameters are what is checked here
+# and the spouted bed on coarser meshes of the same geometry: their parameters are what is
+# checked here
 COARSER = {"seed000_large_column.prm": "subsection mesh\n set geometry parameters = radius: 0.075, height: 1.5, "
-                                       "n_core: 3, n_ring: 2, n_layers: 30\nend\n"}
+                                       "n_core: 3, n_ring: 2, n_layers: 30\nend\n",
+           # the spouted bed's jet (144 m/s) takes steps of ~5 us: 60 of them on 9 x 40 cells
+           "seed004_spouted_bed.prm": "subsection mesh\n set geometry parameters = n_side: 4, ny: 40\nend\n"}
 for prm in sorted(os.listdir(os.path.join(source, "prm"))):
     if not prm.endswith(".prm"):
         continue
@@ -177,6 +180,22 @@ cases = [
     ("gravity 1e999", "subsection physical properties\n set gravity = 0, -1e999, 0\nend", "physical properties/gravity"),
     ("particle diameter inf", "subsection physical properties\n set particle diameter = inf\nend", "particle diameter"),
     ("Nitsche penalty inf", "subsection boundary conditions\n set Nitsche penalty = inf\nend", "Nitsche penalty"),
+    ("inlet velocity for a group that is no inlet", "subsection boundary conditions\n set inlet velocities = jet: 2\nend", "boundary conditions/inlet velocities"),
+    ("inlet velocity and mass flow for one group", "subsection boundary conditions\n set inlet velocities = inlet: 2\n set inlet mass flow rates = inlet: 0.01\nend", "boundary conditions/inlet mass flow rates"),
+    ("inlet velocity not an expression", "subsection boundary conditions\n set inlet velocities = inlet: 2*(x\nend", "boundary conditions/inlet velocities"),
+    ("inlet velocity in z in 2D", "subsection boundary conditions\n set inlet velocities = inlet: z\nend", "boundary conditions/inlet velocities"),
+    ("inlet velocity infinite at x = 0", "subsection boundary conditions\n set inlet velocities = inlet: 1/x\nend", "boundary conditions/inlet velocities"),
+    ("inlet group named twice", "subsection boundary conditions\n set inlet velocities = inlet: 1; inlet: 2\nend", "boundary conditions/inlet velocities"),
+    ("inlet mass flow along the inlet", "subsection boundary conditions\n set inlet mass flow rates = inlet: 0.01\n set inlet directions = inlet: 1 0\nend", "boundary conditions/inlet mass flow rates"),
+    ("inlet direction out of the domain", "subsection boundary conditions\n set inlet directions = inlet: 0 -1\nend", "boundary conditions/inlet directions"),
+    ("inlet direction of three components in 2D", "subsection boundary conditions\n set inlet directions = inlet: 0 1 0\nend", "boundary conditions/inlet directions"),
+    ("inlet direction zero", "subsection boundary conditions\n set inlet directions = inlet: 0 0\nend", "boundary conditions/inlet directions"),
+    ("profile line with a 1D point", "subsection statistics\n set lines = axis: 0.025, 0.025 0.3, 10\nend", "statistics/lines"),
+    ("profile line of one point", "subsection statistics\n set lines = axis: 0.025 0, 0.025 0.3, 1\nend", "statistics/lines"),
+    ("profile line without a name", "subsection statistics\n set lines = 0.025 0, 0.025 0.3, 10\nend", "statistics/lines"),
+    ("radial profile in 2D", "subsection statistics\n set radial profile heights = 0.1\nend", "statistics/radial profile heights"),
+    ("plane height not a number", "subsection statistics\n set plane heights = high\nend", "statistics/plane heights"),
+    ("lateral profile height twice", "subsection statistics\n set lateral profile heights = 0.1, 0.1\nend", "statistics/lateral profile heights"),
     ("inlet velocity 1/0", "subsection boundary conditions\n set inlet superficial velocity = 1/0\nend", "boundary conditions/inlet superficial velocity"),
     ("inlet velocity log(t)", "subsection boundary conditions\n set inlet superficial velocity = log(t)\nend", "boundary conditions/inlet superficial velocity"),
     ("inlet velocity NaN after t = 1 s", "subsection boundary conditions\n set inlet superficial velocity = sqrt(1 - t)\nend", "boundary conditions/inlet superficial velocity"),

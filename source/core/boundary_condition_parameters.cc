@@ -1,8 +1,12 @@
 #include <wetbed/core/boundary_condition_parameters.h>
+#include <wetbed/core/expression_constants.h>
 #include <wetbed/core/input_error.h>
 
 #include <deal.II/base/function_parser.h>
 
+#include <deal.II/base/utilities.h>
+
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <sstream>
@@ -40,7 +44,31 @@ void BoundaryConditionParameters::declare_parameters (ParameterHandler &prm)
       Anything (),
       "Superficial gas velocity U at the inlet (m/s), a function of t; the "
       "gas enters at U/alpha_g with the local gas fraction "
-      "(muparser syntax, e.g. 'min(0.8, 0.2*t)').");
+      "(muparser syntax, e.g. 'min(0.8, 0.2*t)'). It applies to every inlet group "
+      "without an entry in `inlet velocities` or `inlet mass flow rates`.");
+  prm.declare_entry (
+      "inlet velocities",
+      "",
+      Anything (),
+      "Inlet groups with their own superficial gas velocity (m/s): ';'-separated "
+      "`group: expression` entries, each a function of x, y, z (3D) and t, e.g. "
+      "'jet: 30*(t > 0.1); distributor: 0.3'. The gas enters at U/alpha_g with the "
+      "local gas fraction, along the group's direction. Empty: none.");
+  prm.declare_entry (
+      "inlet mass flow rates",
+      "",
+      Anything (),
+      "Inlet groups fed a gas mass flow rate (kg/s; kg/s per metre depth in 2D): "
+      "';'-separated `group: expression` entries, each a function of t. The "
+      "superficial velocity is the rate over the gas density and the group's area "
+      "projected on its direction. A group is in `inlet velocities` or here, not "
+      "both. Empty: none.");
+  prm.declare_entry ("inlet directions",
+                     "",
+                     Anything (),
+                     "The direction in which the gas enters through an inlet group: "
+                     "';'-separated `group: x y [z]` entries (normalised; it must point "
+                     "into the domain). A group not named enters against gravity.");
   const std::string names = closures::registered_names (wall_condition_registry ());
   const std::string per_group =
       " on the walls: one condition (" + names +
@@ -122,12 +150,52 @@ void BoundaryConditionParameters::parse_parameters (ParameterHandler &prm)
   moving_wall_name     = prm.get ("moving wall");
   moving_wall_velocity = parse_vector (prm.get ("moving wall velocity"),
                                        "boundary conditions/moving wall velocity");
+  inlet_groups.clear ();
+  const auto group = [&] (const std::string &name) -> InletGroup &
+  {
+    for (InletGroup &g : inlet_groups)
+      if (g.name == name)
+        return g;
+    inlet_groups.push_back ({name, "", "", {}});
+    return inlet_groups.back ();
+  };
+  for (const char *list :
+       {"inlet velocities", "inlet mass flow rates", "inlet directions"})
+  {
+    const std::string        where = std::string ("boundary conditions/") + list;
+    std::vector<std::string> named;
+    for (const auto &item : dealii::Utilities::split_string_list (prm.get (list), ';'))
+    {
+      const auto colon = item.find (':');
+      require (colon != std::string::npos && colon > 0,
+               where,
+               "'" + item + "' is not `group: value`");
+      const std::string name  = dealii::Utilities::trim (item.substr (0, colon));
+      const std::string value = dealii::Utilities::trim (item.substr (colon + 1));
+      require (std::find (named.begin (), named.end (), name) == named.end (),
+               where,
+               "the group '" + name + "' is named twice");
+      named.push_back (name);
+      require (!value.empty (), where, "the group '" + name + "' has no value");
+      InletGroup &g = group (name);
+      if (std::string (list) == "inlet velocities")
+        g.velocity = value;
+      else if (std::string (list) == "inlet mass flow rates")
+        g.mass_flow = value;
+      else
+      {
+        std::istringstream components (value);
+        for (std::string c; components >> c;)
+          g.direction.push_back (parse_number (c, where));
+      }
+    }
+  }
   prm.leave_subsection ();
   QuietStandardError quiet;
   try
   {
     dealii::FunctionParser<3> f (3);
-    f.initialize ("x,y,z,t", held_solids_velocity, {}, true);
+    f.initialize ("x,y,z,t", held_solids_velocity, expression_constants (), true);
     (void)f.value (dealii::Point<3> (), 0);
   }
   catch (...)
@@ -139,7 +207,7 @@ void BoundaryConditionParameters::parse_parameters (ParameterHandler &prm)
   try
   {
     dealii::FunctionParser<1> f (1);
-    f.initialize ("t", inlet_superficial_velocity, {});
+    f.initialize ("t", inlet_superficial_velocity, expression_constants ());
     (void)f.value (dealii::Point<1> (0.0));
   }
   catch (...)
@@ -163,11 +231,86 @@ void BoundaryConditionParameters::check_wall_conditions (
       (void)wall_condition_registry ().at (name) (settings[k]);
 }
 
+void BoundaryConditionParameters::check_inlet_groups (
+    const std::vector<std::string> &inlet_names, const unsigned int dim)
+{
+  QuietStandardError quiet;
+  std::string        known;
+  for (const auto &name : inlet_names)
+    known += (known.empty () ? "" : ", ") + name;
+  for (InletGroup &g : inlet_groups)
+  {
+    const std::string where = "boundary conditions/" +
+                              std::string (!g.mass_flow.empty () ? "inlet mass flow rates"
+                                           : !g.velocity.empty () ? "inlet velocities"
+                                                                  : "inlet directions");
+    require (std::find (inlet_names.begin (), inlet_names.end (), g.name) !=
+                 inlet_names.end (),
+             where,
+             "'" + g.name + "' is not an inlet group (mesh/inlet: " +
+                 (known.empty () ? "none" : known) + ")");
+    require (g.velocity.empty () || g.mass_flow.empty (),
+             "boundary conditions/inlet mass flow rates",
+             "the group '" + g.name + "' also has an entry in `inlet velocities`");
+    const std::string variables = dim == 3 ? "x,y,z,t" : "x,y,t";
+    for (const bool mass : {false, true})
+    {
+      const std::string &expression = mass ? g.mass_flow : g.velocity;
+      if (expression.empty ())
+        continue;
+      try
+      {
+        if (mass)
+        {
+          dealii::FunctionParser<1> f (1);
+          f.initialize ("t", expression, expression_constants ());
+          (void)f.value (dealii::Point<1> (0.0));
+        }
+        else if (dim == 3)
+        {
+          dealii::FunctionParser<3> f (1);
+          f.initialize (variables, expression, expression_constants (), true);
+          (void)f.value (dealii::Point<3> ());
+        }
+        else
+        {
+          dealii::FunctionParser<2> f (1);
+          f.initialize (variables, expression, expression_constants (), true);
+          (void)f.value (dealii::Point<2> ());
+        }
+      }
+      catch (...)
+      {
+        throw InputError (mass ? "boundary conditions/inlet mass flow rates"
+                               : "boundary conditions/inlet velocities",
+                          "'" + expression + "' of the group '" + g.name +
+                              "' is not a valid expression in " +
+                              (mass ? std::string ("t") : variables));
+      }
+    }
+    if (!g.direction.empty ())
+    {
+      require (g.direction.size () == dim,
+               "boundary conditions/inlet directions",
+               "the direction of '" + g.name + "' needs " + std::to_string (dim) +
+                   " components");
+      double norm = 0;
+      for (const double c : g.direction)
+        norm += c * c;
+      require (norm > 0,
+               "boundary conditions/inlet directions",
+               "the direction of '" + g.name + "' is zero");
+      for (double &c : g.direction)
+        c /= std::sqrt (norm);
+    }
+  }
+}
+
 void BoundaryConditionParameters::check_time_span (const double end_time) const
 {
   QuietStandardError        quiet;
   dealii::FunctionParser<1> f (1);
-  f.initialize ("t", inlet_superficial_velocity, {});
+  f.initialize ("t", inlet_superficial_velocity, expression_constants ());
   const unsigned int samples = 400;
   for (unsigned int i = 0; i <= samples; ++i)
   {

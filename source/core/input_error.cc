@@ -6,6 +6,23 @@
 
 namespace wetbed
 {
+double parse_number (const std::string &text, const std::string &where)
+{
+  std::size_t used  = 0;
+  double      value = 0;
+  try
+  {
+    value = std::stod (text, &used);
+  }
+  catch (const std::logic_error &)
+  {
+    used = 0;
+  }
+  require (used == text.size () && used > 0, where, "'" + text + "' is not a number");
+  require (std::isfinite (value), where, "'" + text + "' is not a finite number");
+  return value;
+}
+
 dealii::Tensor<1, 3> parse_vector (const std::string &text, const std::string &where)
 {
   const std::vector<std::string> parts = dealii::Utilities::split_string_list (text, ',');
@@ -14,22 +31,7 @@ dealii::Tensor<1, 3> parse_vector (const std::string &text, const std::string &w
            "needs three comma-separated numbers (got '" + text + "')");
   dealii::Tensor<1, 3> vector;
   for (unsigned int d = 0; d < 3; ++d)
-  {
-    std::size_t used = 0;
-    try
-    {
-      vector[d] = std::stod (parts[d], &used);
-    }
-    catch (const std::logic_error &)
-    {
-      used = 0;
-    }
-    require (used == parts[d].size () && used > 0,
-             where,
-             "'" + parts[d] + "' is not a number");
-    require (
-        std::isfinite (vector[d]), where, "'" + parts[d] + "' is not a finite number");
-  }
+    vector[d] = parse_number (parts[d], where);
   return vector;
 }
 } // namespace wetbed

@@ -547,10 +547,11 @@ void Parameters::parse_parameters (ParameterHandler &prm)
   bubble_analysis.parse_parameters (prm);
   spectrum.parse_parameters (prm);
   ect_sensor.parse_parameters (prm);
-  statistics.parse_parameters (prm);
+  statistics.parse_parameters (prm, dimension);
   divergence_checks.parse_parameters (prm);
   bed_monitors.parse_parameters (prm, dimension);
   boundary.check_time_span (time.end_time);
+  boundary.check_inlet_groups (mesh.inlet_names, dimension);
   collect_domain_checks ();
 }
 

@@ -1,5 +1,6 @@
 #include <wetbed/postprocess/bed_monitors.h>
 #include <wetbed/postprocess/bed_profile.h>
+#include <wetbed/postprocess/gas_flows.h>
 #include <wetbed/postprocess/momentum_budget.h>
 #include <wetbed/postprocess/pressure_drop.h>
 #include <wetbed/postprocess/wall_forces.h>
@@ -45,6 +46,9 @@ MonitorRow evaluate_monitors (const SolverState<dim> &s)
       s.initial_solids_mass > 0 ? row.solids_mass / s.initial_solids_mass - 1 : 0;
   const PressureDrop drop = evaluate_pressure_drop (s, row.solids_mass);
   row.pressure_drop       = drop.pressure_drop;
+  const GasFlows flows    = evaluate_gas_flows (s);
+  row.gas_inflow          = flows.inflow;
+  row.gas_outflow         = flows.outflow;
   row.fluidization        = drop.fluidization;
   const double weight =
       row.solids_mass * (1 - pp.gas_density / pp.particle_density) * pp.gravity.norm ();

@@ -22,7 +22,7 @@ std::string header (const MonitorColumns &columns)
           "granular_wall_flux,active_cells,bed_surface_height,expansion_ratio,"
           "wall_support_solids,wall_support_gas,distributor_support,outlet_support,"
           "mixture_momentum,continuity_defect,momentum_outflow,correction_force,"
-          "inlet_reaction,wall_reaction,outlet_reaction";
+          "inlet_reaction,wall_reaction,outlet_reaction,gas_inflow,gas_outflow";
   for (const double h : columns.probe_heights)
     file << ",alpha_s_plane_" << h;
   if (columns.pressure_drop_planes.size () == 2)
@@ -136,7 +136,8 @@ void Monitors::add (const MonitorRow &r)
        << ',' << r.wall_support_gas << ',' << r.distributor_support << ','
        << r.outlet_support << ',' << r.mixture_momentum << ',' << r.continuity_defect
        << ',' << r.momentum_outflow << ',' << r.correction_force << ','
-       << r.inlet_reaction << ',' << r.wall_reaction << ',' << r.outlet_reaction;
+       << r.inlet_reaction << ',' << r.wall_reaction << ',' << r.outlet_reaction << ','
+       << r.gas_inflow << ',' << r.gas_outflow;
   for (const double a : r.plane_alpha)
     file << ',' << a;
   for (const double dp : r.plane_pressure_drop)

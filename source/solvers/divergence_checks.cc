@@ -69,7 +69,7 @@ double DivergenceChecks<dim>::reference_speed (const SolverState<dim> &s) const
   const double g        = pp.gravity.norm ();
   const double terminal = closures::terminal_velocity (
       pp.particle_density, pp.particle_diameter, pp.gas_density, pp.gas_viscosity, g);
-  return std::max ({std::abs (s.inlet_velocity) / (1 - pp.maximum_packing),
+  return std::max ({s.inlet_peak_velocity / (1 - pp.maximum_packing),
                     terminal,
                     std::sqrt (2 * g * std::max (height, 0.0)),
                     s.moving_wall_velocity.norm ()});

@@ -32,6 +32,7 @@ void TwoFluidSolver<dim>::setup_dofs ()
   TimerOutput::Scope scope (timer, "setup");
   // the mapping's support points on this mesh (a mesh change invalidates them)
   mapping.initialize (MappingQ<dim> (parameters.mesh.mapping_degree), triangulation);
+  inlets.reinit (triangulation, mapping, boundaries, communicator);
   flow_dof_handler.distribute_dofs (flow_fe);
   std::vector<unsigned int> block_of_component (2 * dim + 1, 0);
   block_of_component[2 * dim] = 1;

@@ -174,14 +174,13 @@ void TwoFluidSolver<dim>::constrain_held_solids (const double at_time)
 template <int dim>
 void TwoFluidSolver<dim>::constrain_inlet_gas (const double at_time)
 {
-  // the gas enters against gravity with the superficial velocity U, i.e. at U/alpha_g
-  // with the local gas fraction at each node, so the volume flux is U whatever bed sits
-  // on the distributor
-  const Tensor<1, dim>  up = upward_direction<dim> (parameters.physical.gravity);
-  const double          U  = inlet_superficial_velocity (at_time);
+  // the gas enters with the superficial velocity U of its group, i.e. at U/alpha_g with
+  // the local gas fraction at each node, so the volume flux is U whatever bed sits on
+  // the distributor
   const Quadrature<dim> nodes (flow_fe.get_unit_support_points ());
-  FEValues<dim>         alpha_at_nodes (mapping, alpha_fe, nodes, update_values);
-  std::vector<double>   alpha_values (nodes.size ());
+  FEValues<dim>         alpha_at_nodes (
+      mapping, alpha_fe, nodes, update_values | update_quadrature_points);
+  std::vector<double>                  alpha_values (nodes.size ());
   std::vector<types::global_dof_index> dofs (flow_fe.n_dofs_per_cell ());
   auto                                 alpha_cell = alpha_dof_handler.begin_active ();
   for (const auto &cell : flow_dof_handler.active_cell_iterators ())
@@ -200,9 +199,12 @@ void TwoFluidSolver<dim>::constrain_inlet_gas (const double at_time)
             if (c >= dim || !flow_fe.has_support_on_face (i, f) ||
                 flow_constraints.is_constrained (dofs[i]))
               continue;
+            const Tensor<1, dim> U =
+                inlets.superficial_velocity (cell->face (f)->boundary_id (),
+                                             alpha_at_nodes.quadrature_point (i),
+                                             at_time);
             flow_constraints.add_line (dofs[i]);
-            flow_constraints.set_inhomogeneity (dofs[i],
-                                                U / (1.0 - alpha_values[i]) * up[c]);
+            flow_constraints.set_inhomogeneity (dofs[i], U[c] / (1.0 - alpha_values[i]));
           }
         }
     ++alpha_cell;

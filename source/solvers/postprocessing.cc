@@ -41,7 +41,8 @@ SolverState<dim> TwoFluidSolver<dim>::state () const
                           moving_wall_velocity (),
                           time,
                           previous_time_step,
-                          inlet_superficial_velocity (time),
+                          inlets.mean_superficial_velocity (time),
+                          inlets.peak_superficial_velocity (time),
                           step_number,
                           rejected_steps,
                           last_krylov_iterations,
@@ -129,6 +130,33 @@ void TwoFluidSolver<dim>::accumulate_averages ()
 }
 
 template <int dim>
+void TwoFluidSolver<dim>::write_fields ()
+{
+  field_output.write (state ());
+  if (!profiles)
+    return;
+  TimerOutput::Scope scope (timer, "profiles");
+  profiles->write (state ());
+  if (Utilities::MPI::broadcast (communicator, profiles->writing_failed (), 0))
+    throw std::runtime_error (
+        "output/folder: could not write the profiles in '" + parameters.output.folder +
+        "/statistics' at t = " + std::to_string (time) + " (disk full?)");
+}
+
+template <int dim>
+std::vector<std::pair<std::string, unsigned long long>>
+TwoFluidSolver<dim>::appended_files ()
+{
+  std::vector<std::pair<std::string, unsigned long long>> files;
+  if (ect_sensor)
+    files = ect_sensor->file_lengths ();
+  if (profiles)
+    for (const auto &file : profiles->file_lengths ())
+      files.push_back (file);
+  return files;
+}
+
+template <int dim>
 void TwoFluidSolver<dim>::write_spectra () const
 {
   const auto &sp = parameters.spectrum;
@@ -182,6 +210,12 @@ template void TwoFluidSolver<2>::make_bubble_analysis ();
 template void TwoFluidSolver<3>::make_bubble_analysis ();
 template void TwoFluidSolver<2>::analyse_bubbles ();
 template void TwoFluidSolver<3>::analyse_bubbles ();
+template void TwoFluidSolver<2>::write_fields ();
+template void TwoFluidSolver<3>::write_fields ();
+template std::vector<std::pair<std::string, unsigned long long>>
+TwoFluidSolver<2>::appended_files ();
+template std::vector<std::pair<std::string, unsigned long long>>
+              TwoFluidSolver<3>::appended_files ();
 template void TwoFluidSolver<2>::write_spectra () const;
 template void TwoFluidSolver<3>::write_spectra () const;
 } // namespace wetbed

@@ -1,3 +1,4 @@
+#include <wetbed/core/expression_constants.h>
 #include <wetbed/core/input_error.h>
 #include <wetbed/core/stop_signal.h>
 #include <wetbed/postprocess/bed_monitors.h>
@@ -59,15 +60,17 @@ TwoFluidSolver<dim>::TwoFluidSolver (const Parameters &parameters, MPI_Comm comm
       time_step_controller (parameters.time), divergence_checks (this->parameters),
       mesh_adaptation (parameters),
       checkpointing (parameters, communicator, pcout, timer),
-      field_output (parameters, timer), time (0),
-      time_step (parameters.time.initial_time_step), previous_time_step (0),
+      field_output (parameters, timer),
+      inlets (parameters.boundary,
+              parameters.physical.gas_density,
+              upward_direction<dim> (parameters.physical.gravity),
+              parameters.time.end_time),
+      time (0), time_step (parameters.time.initial_time_step), previous_time_step (0),
       step_number (0), rejected_steps (0), last_krylov_iterations (0),
       initial_solids_mass (0), min_node_spacing (0)
 {
-  inlet_velocity_function.initialize (
-      "t", parameters.boundary.inlet_superficial_velocity, {});
   held_velocity_function.initialize (
-      "x,y,z,t", parameters.boundary.held_solids_velocity, {}, true);
+      "x,y,z,t", parameters.boundary.held_solids_velocity, expression_constants (), true);
   if (parameters.bed_monitors.pressure_probe_height >= 0)
     pressure_probe = std::make_unique<PressureProbe<dim>> (
         parameters.bed_monitors.pressure_probe_height);
@@ -76,6 +79,8 @@ TwoFluidSolver<dim>::TwoFluidSolver (const Parameters &parameters, MPI_Comm comm
   if (parameters.statistics.time_averages)
     time_averages =
         std::make_unique<TimeAverages<dim>> (parameters.statistics.start_time);
+  if (parameters.statistics.samples ())
+    profiles = std::make_unique<Profiles<dim>> (parameters.statistics);
 }
 
 template <int dim>
@@ -96,7 +101,7 @@ void TwoFluidSolver<dim>::set_manufactured_solution (
 template <int dim>
 double TwoFluidSolver<dim>::inlet_superficial_velocity (const double t) const
 {
-  return inlet_velocity_function.value (Point<1> (t));
+  return inlets.mean_superficial_velocity (t);
 }
 
 template <int dim>
@@ -155,6 +160,8 @@ void TwoFluidSolver<dim>::initialize ()
     update_wave_speeds ();
     if (ect_sensor)
       ect_sensor->open (folder, state ());
+    if (profiles)
+      profiles->open (folder);
   }
   if (parameters.checkpoint.on_signal)
     catch_stop_signals ();
@@ -203,6 +210,13 @@ void TwoFluidSolver<dim>::resume_from_checkpoint ()
       lengths.emplace_back (file.name, file.bytes);
     ect_sensor->reopen (output, lengths, state ());
   }
+  if (profiles)
+  {
+    std::vector<std::pair<std::string, unsigned long long>> lengths;
+    for (const AppendedFile &file : saved.appended_files)
+      lengths.emplace_back (file.name, file.bytes);
+    profiles->reopen (output, lengths);
+  }
   resumed = true;
   pcout << "Resumed run " << run_id << " from " << checkpointing.source ()
         << " at t = " << time << " (step " << step_number << ")" << std::endl;
@@ -211,16 +225,14 @@ void TwoFluidSolver<dim>::resume_from_checkpoint ()
 template <int dim>
 void TwoFluidSolver<dim>::write_checkpoint ()
 {
-  checkpointing.write (
-      state (),
-      transferred_fields (),
-      *bubble_analysis,
-      {time_step,
-       monitors.bytes_written (),
-       run_id,
-       field_output.counters (),
-       ect_sensor ? ect_sensor->file_lengths ()
-                  : std::vector<std::pair<std::string, unsigned long long>> ()});
+  checkpointing.write (state (),
+                       transferred_fields (),
+                       *bubble_analysis,
+                       {time_step,
+                        monitors.bytes_written (),
+                        run_id,
+                        field_output.counters (),
+                        appended_files ()});
 }
 
 template <int dim>
@@ -687,7 +699,7 @@ void TwoFluidSolver<dim>::stop_diverged (const std::string            &why,
     std::ofstream (file) << report;
   pcout << report;
   restore ();
-  field_output.write (state ());
+  write_fields ();
   write_checkpoint ();
   throw std::runtime_error (why + " at t = " + std::to_string (time) + " (" +
                             rejection_reason + "); diagnosis in " + file +
@@ -710,7 +722,7 @@ typename TwoFluidSolver<dim>::RunEnd TwoFluidSolver<dim>::run ()
     record_monitors ();
     analyse_bubbles ();
     if (parameters.output.field_interval >= 0)
-      field_output.write (state ());
+      write_fields ();
   }
   const auto &checkpoint = parameters.checkpoint;
   while (time < ts.end_time * (1 - 1e-12))
@@ -746,7 +758,7 @@ typename TwoFluidSolver<dim>::RunEnd TwoFluidSolver<dim>::run ()
     // output, which a resumed run would otherwise skip (and write the next one under its
     // number)
     if (field_output.due (time))
-      field_output.write (state ());
+      write_fields ();
     // a checkpoint on the step count, the wall clock (rank 0's, for all) or SIGUSR1;
     // SIGTERM/SIGINT/SIGUSR2 write one and stop
     const SignalRequest request =
@@ -787,7 +799,9 @@ typename TwoFluidSolver<dim>::RunEnd TwoFluidSolver<dim>::run ()
     }
   }
   if (parameters.output.field_interval == 0)
-    field_output.write (state ());
+    write_fields ();
+  if (profiles) // at the end too (an output at this time is not repeated)
+    profiles->write (state ());
   if (checkpoint.at_end &&
       !(checkpoint.interval > 0 && step_number % checkpoint.interval == 0))
     write_checkpoint ();

@@ -6,14 +6,26 @@
 #include <deal.II/base/tensor.h>
 
 #include <string>
+#include <vector>
 
 namespace wetbed
 {
+/** The gas inflow of one inlet group (`boundary conditions/inlet velocities`,
+ * `inlet mass flow rates`, `inlet directions`). */
+struct InletGroup
+{
+  std::string         name;
+  std::string         velocity;  // superficial velocity (m/s), function of x, y, (z,) t
+  std::string         mass_flow; // kg/s (kg/s per metre depth in 2D), function of t
+  std::vector<double> direction; // the gas enters along it; empty: against gravity
+};
+
 /** `subsection boundary conditions`. */
 struct BoundaryConditionParameters
 {
-  std::string         inlet_superficial_velocity; // function of t (m/s)
-  WallConditionChoice gas_wall, solids_wall;
+  std::string             inlet_superficial_velocity; // function of t (m/s)
+  std::vector<InletGroup> inlet_groups;               // the groups with their own inflow
+  WallConditionChoice     gas_wall, solids_wall;
   // Robin coefficients of a partial-slip wall, kg m^-2 s^-1
   double      gas_wall_friction, solids_wall_friction;
   bool        nitsche;              // weak no-penetration on slip walls (else strong)
@@ -43,6 +55,11 @@ struct BoundaryConditionParameters
    * cannot be (partial slip without friction, Johnson-Jackson without kinetic theory
    * or for the gas). */
   void check_wall_conditions (bool has_kinetic_theory) const;
+  /** The inlet groups name groups of `inlet_names`, each once with a velocity or a
+   * mass flow (not both), with expressions muparser reads in the variables of `dim`
+   * and directions of `dim` components that are not zero; InputError naming the
+   * parameter and the group if not. */
+  void check_inlet_groups (const std::vector<std::string> &inlet_names, unsigned int dim);
   /** The inlet velocity finite at 400 times over [0, end_time]; InputError if not. */
   void check_time_span (double end_time) const;
 };

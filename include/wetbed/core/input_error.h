@@ -34,6 +34,9 @@ inline void require_positive (const double value, const std::string &where)
   require (value > 0.0, where, "must be > 0 (got " + std::to_string (value) + ")");
 }
 
+/** A finite number, the whole of `text`; an InputError naming `where` otherwise. */
+double parse_number (const std::string &text, const std::string &where);
+
 /** Three comma-separated numbers; an InputError naming `where` otherwise. */
 dealii::Tensor<1, 3> parse_vector (const std::string &text, const std::string &where);
 } // namespace wetbed

@@ -1,20 +1,24 @@
 #pragma once
 
-#include <wetbed/solvers/solver_state.h>
-
-#include <deal.II/base/mpi_remote_point_evaluation.h>
+#include <wetbed/postprocess/field_sampler.h>
 
 #include <vector>
 
 namespace wetbed
 {
+/** The pixel centres of the horizontal bounding box of `frame` at each height, height
+ * after height, each row-major (first horizontal axis fastest): resolution^(dim - 1)
+ * points per height. */
+template <int dim>
+std::vector<dealii::Point<dim>> cross_section_points (const HorizontalFrame<dim> &frame,
+                                                      const std::vector<double>  &heights,
+                                                      unsigned int resolution);
+
 /**
  * Horizontal cross-sections of the domain sampled on a grid of points: at each height
  * (along -g from the coordinate origin) `resolution` x `resolution` points (3D;
  * `resolution` in 2D) at the centres of the pixels of the domain's horizontal bounding
- * box. The points are located once per mesh with deal.II's RemotePointEvaluation (each
- * rank evaluates the points in its cells, whoever asked for them), again after every
- * mesh change; a point outside the domain reads NaN. Evaluations are collective
+ * box, evaluated by a FieldSampler (a point outside the domain reads NaN); collective
  * (source/postprocess/cross_section_sampler.cc).
  */
 template <int dim>
@@ -37,11 +41,8 @@ public:
   static double mean (const std::vector<double> &values);
 
 private:
-  void locate (const SolverState<dim> &state);
-
-  std::vector<double>                                heights;
-  unsigned int                                       resolution, per_height;
-  dealii::Utilities::MPI::RemotePointEvaluation<dim> points;
-  std::vector<bool>                                  found;
+  std::vector<double> heights;
+  unsigned int        resolution, per_height;
+  FieldSampler<dim>   sampler;
 };
 } // namespace wetbed

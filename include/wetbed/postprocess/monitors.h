@@ -46,6 +46,9 @@ struct MonitorRow
   // of their velocity rows) as shares of the weight; inlet: the discrete counterpart of
   // FI + distributor_support
   double inlet_reaction = 0, wall_reaction = 0, outlet_reaction = 0;
+  // the gas mass flows in through the inlets and out through the outlets (kg/s, per
+  // metre depth in 2D)
+  double gas_inflow = 0, gas_outflow = 0;
   double solids_mass      = 0; // kg (per metre depth in 2D)
   double mass_drift       = 0; // relative change of the solids mass since t = 0
   double alpha_min        = 0;

@@ -62,6 +62,10 @@ public:
 
   const BlockVector &flow_average () const { return flow_mean; }
   const AlphaVector &alpha_average () const { return alpha_mean; }
+  const AlphaVector &theta_average () const { return theta_mean; }
+  /** The sums of squared deviations M2 (variance = M2 / weight). */
+  const BlockVector &flow_squared_deviations () const { return flow_m2; }
+  const AlphaVector &alpha_squared_deviations () const { return alpha_m2; }
 
 private:
   double      start_time;

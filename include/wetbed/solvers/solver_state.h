@@ -61,8 +61,9 @@ struct SolverState
 
   // the time stepping
   double       time;
-  double       time_step;      // of the last accepted step (0 before the first)
-  double       inlet_velocity; // U(time), m/s
+  double       time_step;           // of the last accepted step (0 before the first)
+  double       inlet_velocity;      // U(time): the mean over the inlets, m/s
+  double       inlet_peak_velocity; // the largest superficial speed on an inlet, m/s
   unsigned int step_number, rejected_steps, krylov_iterations;
   double       initial_solids_mass;
   // the vertical mixture momentum the compaction correction added in the last outer

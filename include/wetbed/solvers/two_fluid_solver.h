@@ -1,6 +1,7 @@
 #pragma once
 
 #include <wetbed/assembly/flow/flow_assembler.h>
+#include <wetbed/boundary_conditions/inlet_conditions.h>
 #include <wetbed/boundary_conditions/wall_conditions.h>
 #include <wetbed/closures/closure_evaluator.h>
 #include <wetbed/closures/drag/drag_model.h>
@@ -17,6 +18,7 @@
 #include <wetbed/postprocess/field_output.h>
 #include <wetbed/postprocess/monitors.h>
 #include <wetbed/postprocess/pressure_probe.h>
+#include <wetbed/postprocess/profiles.h>
 #include <wetbed/postprocess/time_averages.h>
 #include <wetbed/solvers/checkpointing.h>
 #include <wetbed/solvers/divergence_checks.h>
@@ -174,6 +176,11 @@ private:
   void record_ect ();
   /** The last accepted step into the time averages, if they are on. */
   void accumulate_averages ();
+  /** The field files and the profiles of the current state; collective. */
+  void write_fields ();
+  /** (name, bytes) of the files the checkpoint cuts back to on resume, besides
+   * monitors.csv and the bubble files. */
+  std::vector<std::pair<std::string, unsigned long long>> appended_files ();
   /** spectrum.csv from monitors.csv (and ect_spectrum.csv from ect.csv), at the end of a
    * run that lasted past the spectrum start time (rank 0). */
   void write_spectra () const;
@@ -241,7 +248,6 @@ private:
   const closures::KineticTheory               *kinetic_theory; // null without KTGF
   closures::GasParticleProperties              gas_particle;
   closures::ClosureEvaluator                   closure_evaluator;
-  mutable dealii::FunctionParser<1>            inlet_velocity_function;
   dealii::FunctionParser<3> held_velocity_function{3}; // u_s(x, y, z, t) where held
   std::shared_ptr<ManufacturedSolution<dim>> manufactured;
 
@@ -260,19 +266,22 @@ private:
   // the seed's instruments, when the case asks for them
   std::unique_ptr<PressureProbe<dim>> pressure_probe;
   std::unique_ptr<EctSensor<dim>>     ect_sensor;
-  // the time-averaged fields (subsection statistics), when asked for
+  // the time-averaged fields and the profiles (subsection statistics), when asked for
   std::unique_ptr<TimeAverages<dim>> time_averages;
+  std::unique_ptr<Profiles<dim>>     profiles;
   // the field files and their counters
   FieldOutput<dim> field_output;
-  double           time, time_step, previous_time_step;
-  unsigned int     step_number, rejected_steps, last_krylov_iterations;
-  WaveSpeeds       wave_speeds; // of the current fields (update_wave_speeds)
-  double           initial_solids_mass;
-  double           min_node_spacing;
-  bool             initialized = false;
-  bool             resumed     = false; // the state came from a checkpoint
-  std::string      run_id;              // new for each run, kept by its resumes
-  std::string      rejection_reason;    // why the last attempted step was rejected
-  SolveHistory     solve_history;       // the linear solves of the current step
+  // the gas inflow of each inlet group
+  InletConditions<dim> inlets;
+  double               time, time_step, previous_time_step;
+  unsigned int         step_number, rejected_steps, last_krylov_iterations;
+  WaveSpeeds           wave_speeds; // of the current fields (update_wave_speeds)
+  double               initial_solids_mass;
+  double               min_node_spacing;
+  bool                 initialized = false;
+  bool                 resumed     = false; // the state came from a checkpoint
+  std::string          run_id;              // new for each run, kept by its resumes
+  std::string          rejection_reason;    // why the last attempted step was rejected
+  SolveHistory         solve_history;       // the linear solves of the current step
 };
 } // namespace wetbed

@@ -1,0 +1,83 @@
+#pragma once
+
+#include <wetbed/core/boundary_condition_parameters.h>
+#include <wetbed/mesh/boundaries.h>
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/grid/tria.h>
+
+#include <map>
+#include <memory>
+#include <vector>
+
+namespace wetbed
+{
+/**
+ * The gas inflow of every inlet group: a superficial velocity U(x, t) along a direction
+ * (`boundary conditions/inlet velocities`, `inlet directions`), a mass flow rate m(t)
+ * turned into U = m / (rho_g A) with the group's area projected on its direction
+ * (`inlet mass flow rates`), or the common `inlet superficial velocity` U(t) against
+ * gravity. The faces of the inlets (their quadrature points and weights) are gathered
+ * on every rank after each mesh change, so that the inflow's means and peaks need no
+ * communication (source/boundary_conditions/inlet_conditions.cc).
+ */
+template <int dim>
+class InletConditions
+{
+public:
+  /** `end_time`: the velocities are checked finite over [0, end_time]. */
+  InletConditions (const BoundaryConditionParameters &parameters,
+                   double                             gas_density,
+                   const dealii::Tensor<1, dim>      &upward,
+                   double                             end_time);
+
+  /** The inlet faces of this mesh; collective. InputError naming `boundary
+   * conditions/inlet mass flow rates` for a mass flow on a group of zero (projected)
+   * area, `inlet directions` for a direction out of the domain, or `inlet velocities`
+   * (`inlet mass flow rates`) for a velocity that is not finite at a quadrature point of
+   * a face at one of 51 times over [0, end_time]. */
+  void reinit (const dealii::Triangulation<dim> &triangulation,
+               const dealii::Mapping<dim>       &mapping,
+               const Boundaries                 &boundaries,
+               MPI_Comm                          communicator);
+
+  /** The superficial gas velocity vector entering through the group `id` at `x`. */
+  dealii::Tensor<1, dim> superficial_velocity (dealii::types::boundary_id id,
+                                               const dealii::Point<dim>  &x,
+                                               double                     t) const;
+
+  /** The gas volume flow over the inlet area, all inlets together (m/s). */
+  double mean_superficial_velocity (double t) const;
+
+  /** The largest superficial speed on an inlet face (m/s). */
+  double peak_superficial_velocity (double t) const;
+
+  /** The area of each inlet group (m^2; m per metre depth in 2D), by name. */
+  std::map<std::string, double> areas () const;
+
+private:
+  struct Group
+  {
+    std::string                                  name;
+    dealii::types::boundary_id                   id;
+    dealii::Tensor<1, dim>                       direction;
+    std::unique_ptr<dealii::FunctionParser<dim>> velocity;  // U(x, t)
+    std::unique_ptr<dealii::FunctionParser<1>>   mass_flow; // m(t)
+    double                                       area = 0, projected_area = 0;
+    bool uniform = true; // the same speed on all its faces (no U(x, t) of its own)
+    std::vector<dealii::Point<dim>> points; // quadrature points of its faces
+    std::vector<double>             weights;
+  };
+
+  const Group &group (dealii::types::boundary_id id) const;
+  double       speed (const Group &g, const dealii::Point<dim> &x, double t) const;
+
+  const BoundaryConditionParameters &parameters;
+  double                             gas_density, end_time;
+  dealii::Tensor<1, dim>             upward;
+  std::vector<Group>                 groups;
+};
+} // namespace wetbed
