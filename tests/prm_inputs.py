@@ -110,6 +110,8 @@ cases = [
     ("unknown drag law", "subsection drag\n set model = Stokes\nend", "model"),
     ("unknown rheology", "subsection solids stress\n set model = magic\nend", "model"),
     ("dimension 4", "set dimension = 4", "dimension"),
+    ("3D case on a 2D mesh", "set dimension = 3", ("dimension", "is 2D")),
+    ("2D case on a 3D mesh", "subsection mesh\n set file = " + os.path.join(source, "meshes", "column_3d.geo") + "\nend", ("dimension", "is 3D")),
     ("negative diameter", "subsection physical properties\n set particle diameter = -1e-4\nend", "physical properties/particle diameter"),
     ("zero particle density", "subsection physical properties\n set particle density = 0\nend", "physical properties/particle density"),
     ("solids lighter than gas", "subsection physical properties\n set particle density = 1.0\nend", "physical properties/particle density"),
@@ -403,6 +405,16 @@ check("two runs into one folder", code == 2 and "in use" in last_line(err) and f
 # a previous run's results: refused unless overwrite
 refused("previous results without overwrite", case_into(copy_of_results("previous")), "output/folder",
         os.path.join(work, "previous"), contains="--overwrite")
+# a bad input found only once the mesh is read, pointed at such a folder: refused for
+# the input (the whole input is checked before the folder's verdict), the folder as it was
+refused("bad inlet group into previous results", case_into(copy_of_results("previous_bad_input"),
+        "subsection boundary conditions\n set inlet velocities = inlet: 1/x\nend"),
+        "boundary conditions/inlet velocities", os.path.join(work, "previous_bad_input"))
+refused("bed above the domain into previous results", case_into(copy_of_results("previous_bad_bed"),
+        "subsection initial conditions\n set bed height = 0.5\nend"),
+        "initial conditions/bed height", os.path.join(work, "previous_bad_bed"))
+refused("previous results on 2 ranks", case_into(copy_of_results("previous_2_ranks")), "output/folder",
+        os.path.join(work, "previous_2_ranks"), ranks=2, contains="--overwrite")
 only_checkpoint = copy_of_results("previous_checkpoint")
 os.remove(os.path.join(only_checkpoint, "monitors.csv"))
 refused("previous checkpoint without overwrite", case_into(only_checkpoint), "output/folder", only_checkpoint)

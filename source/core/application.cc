@@ -2,6 +2,7 @@
 #include <wetbed/core/input_error.h>
 #include <wetbed/core/output_folder.h>
 #include <wetbed/core/parameters.h>
+#include <wetbed/core/stall_watchdog.h>
 #include <wetbed/mesh/mesh_input.h>
 #include <wetbed/postprocess/closure_table.h>
 #include <wetbed/postprocess/spectrum.h>
@@ -152,11 +153,14 @@ int run_case (const Parameters &parameters, const dealii::ParameterHandler &prm)
     check_mesh_file (parameters.mesh, parameters.parameter_file_directory);
   OutputFolderLock folder (
       parameters.output.folder, resume, parameters.output.overwrite, MPI_COMM_WORLD);
+  // ends the run if a rank stops making progress (checkpoint/stall timeout)
+  const StallWatchdog watchdog (parameters.checkpoint.stall_timeout,
+                                parameters.output.folder);
   DeferredMeshCommit  mesh; // mesh.msh only once the whole case is accepted
   TwoFluidSolver<dim> solver (parameters, MPI_COMM_WORLD);
   try
   {
-    solver.initialize ();
+    solver.initialize ([&folder] () { folder.accept_folder (); });
   }
   catch (const InputError &)
   {

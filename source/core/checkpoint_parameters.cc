@@ -44,6 +44,15 @@ void CheckpointParameters::declare_parameters (ParameterHandler &prm)
                      "checkpoint's step and continued. The mesh file and the physics "
                      "must be those of the saved run; the end time may be later. The "
                      "number of MPI ranks may differ.");
+  prm.declare_entry (
+      "stall timeout",
+      "1800",
+      Double (0),
+      "Seconds without progress (a Krylov iteration or a step completed) after which "
+      "each rank ends the run with exit status 5 and one line: a rank stopped "
+      "(SIGSTOP), hanging or lost with its node would otherwise keep the others "
+      "waiting in a collective for ever. Longer than the slowest step's set-up, "
+      "adaptation or checkpoint write. The last checkpoint stays. 0: never.");
   prm.leave_subsection ();
 }
 
@@ -55,6 +64,7 @@ void CheckpointParameters::parse_parameters (ParameterHandler &prm)
   on_signal          = prm.get_bool ("on signal");
   wall_time_interval = prm.get_double ("wall time interval");
   resume             = prm.get_bool ("resume");
+  stall_timeout      = prm.get_double ("stall timeout");
   prm.leave_subsection ();
 }
 } // namespace wetbed

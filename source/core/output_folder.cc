@@ -29,7 +29,8 @@ OutputFolderLock::OutputFolderLock (const std::string &folder_,
                                     const bool         overwrite,
                                     MPI_Comm           communicator)
     : folder (folder_),
-      root (dealii::Utilities::MPI::this_mpi_process (communicator) == 0)
+      root (dealii::Utilities::MPI::this_mpi_process (communicator) == 0),
+      communicator (communicator)
 {
   std::string where, error;
   if (root)
@@ -82,12 +83,11 @@ OutputFolderLock::OutputFolderLock (const std::string &folder_,
       }
       replacing = !resume && holds_results (folder);
       if (replacing && !overwrite)
-        throw InputError ("output/folder",
-                          "'" + folder +
-                              "' holds a previous run's results (monitors.csv or "
-                              "checkpoint/): set output/overwrite = true or pass "
-                              "--overwrite to replace them, checkpoint/resume (--resume) "
-                              "to continue that run, or choose another folder");
+        refusal = "'" + folder +
+                  "' holds a previous run's results (monitors.csv or checkpoint/): set "
+                  "output/overwrite = true or pass --overwrite to replace them, "
+                  "checkpoint/resume (--resume) to continue that run, or choose another "
+                  "folder";
     }
     catch (const InputError &e)
     {
@@ -106,6 +106,16 @@ OutputFolderLock::OutputFolderLock (const std::string &folder_,
       close (descriptor);
     throw InputError (where, error);
   }
+}
+
+void OutputFolderLock::accept_folder ()
+{
+  // rank 0 looked at the folder
+  const std::string why = dealii::Utilities::MPI::broadcast (communicator, refusal, 0);
+  if (why.empty ())
+    return;
+  undo_creation ();
+  throw InputError ("output/folder", why);
 }
 
 OutputFolderLock::~OutputFolderLock ()

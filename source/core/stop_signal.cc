@@ -1,3 +1,4 @@
+#include <wetbed/core/stall_watchdog.h>
 #include <wetbed/core/stop_signal.h>
 
 #include <deal.II/base/mpi.h>
@@ -54,10 +55,17 @@ SignalRequest signal_request (MPI_Comm communicator)
 
 bool stop_requested (MPI_Comm communicator)
 {
+  // called at every Krylov iteration: the run's heartbeat for the stall watchdog
+  // (after the collective, which a stopped rank would not let finish)
   if (!signals_caught)
+  {
+    StallWatchdog::report_progress ();
     return false;
+  }
   const unsigned int local = stop_signal_received != 0 ? 1 : 0;
-  return dealii::Utilities::MPI::max (local, communicator) != 0;
+  const bool         stop  = dealii::Utilities::MPI::max (local, communicator) != 0;
+  StallWatchdog::report_progress ();
+  return stop;
 }
 
 void abandon_step_on_stop (MPI_Comm communicator)

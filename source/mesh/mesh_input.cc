@@ -33,10 +33,12 @@ namespace wetbed
 {
 namespace
 {
-/** Physical names of dimension `group_dim` in a MSH file: name -> tag. */
-std::map<std::string, int> read_physical_names (const std::string &msh_file,
-                                                const int          group_dim)
+/** Physical names of dimension `group_dim` in a MSH file: name -> tag; the highest
+ * dimension of any physical group into `highest` (0 if none). */
+std::map<std::string, int>
+read_physical_names (const std::string &msh_file, const int group_dim, int &highest)
 {
+  highest = 0;
   std::ifstream              in (msh_file);
   std::map<std::string, int> names;
   std::string                line;
@@ -50,6 +52,7 @@ std::map<std::string, int> read_physical_names (const std::string &msh_file,
         int         d, tag;
         std::string quoted;
         in >> d >> tag;
+        highest = std::max (highest, d);
         std::getline (in, quoted);
         const auto first = quoted.find ('"'), last = quoted.rfind ('"');
         if (d == group_dim && first != std::string::npos && last > first)
@@ -670,8 +673,14 @@ Boundaries read_mesh (const MeshParameters       &parameters,
   // named as the user knows it: the .geo, or the .msh given
   const std::string shown = generated ? file : msh;
 
-  const auto names = read_physical_names (msh, dim - 1);
-  auto       id_of = [&] (const std::string &name, const std::string &parameter)
+  int        mesh_dim = 0;
+  const auto names    = read_physical_names (msh, dim - 1, mesh_dim);
+  require (mesh_dim < 2 || mesh_dim == dim, // a damaged mesh is mesh/file's
+           "dimension",
+           "the mesh '" + shown + "' is " + std::to_string (mesh_dim) +
+               "D (its highest physical group), the case says `set dimension = " +
+               std::to_string (dim) + "`");
+  auto id_of = [&] (const std::string &name, const std::string &parameter)
   {
     const auto it = names.find (name);
     require (it != names.end (),

@@ -1,5 +1,6 @@
 #include <wetbed/core/expression_constants.h>
 #include <wetbed/core/input_error.h>
+#include <wetbed/core/stall_watchdog.h>
 #include <wetbed/core/stop_signal.h>
 #include <wetbed/postprocess/bed_monitors.h>
 #include <wetbed/solvers/two_fluid_solver.h>
@@ -105,7 +106,7 @@ double TwoFluidSolver<dim>::inlet_superficial_velocity (const double t) const
 }
 
 template <int dim>
-void TwoFluidSolver<dim>::initialize ()
+void TwoFluidSolver<dim>::initialize (const std::function<void ()> &before_writing)
 {
   const std::string folder = parameters.output.folder;
   if (Utilities::MPI::this_mpi_process (communicator) == 0)
@@ -152,6 +153,8 @@ void TwoFluidSolver<dim>::initialize ()
         adapt_mesh ();
         set_initial_state ();
       }
+    if (before_writing)
+      before_writing ();
     monitors.open (folder + "/monitors.csv",
                    Utilities::MPI::this_mpi_process (communicator) == 0,
                    monitor_columns (),
@@ -751,6 +754,7 @@ typename TwoFluidSolver<dim>::RunEnd TwoFluidSolver<dim>::run ()
       update_wave_speeds ();
       time_step = next_time_step (previous_time_step); // the CFL of the new mesh
     }
+    StallWatchdog::report_progress ();
     analyse_bubbles ();
     record_ect ();
     accumulate_averages ();

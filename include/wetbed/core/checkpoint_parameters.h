@@ -14,6 +14,7 @@ struct CheckpointParameters
                              // SIGUSR1: save after the step and go on
   double wall_time_interval; // wall-clock seconds between checkpoints (0: none)
   bool   resume;             // continue from the checkpoint instead of the initial state
+  double stall_timeout;      // s without progress before the run ends itself (0: never)
 
   static void declare_parameters (dealii::ParameterHandler &prm);
   void        parse_parameters (dealii::ParameterHandler &prm);

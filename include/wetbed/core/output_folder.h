@@ -39,6 +39,15 @@ public:
   void undo_creation ();
 
   /**
+   * The whole input has been checked (the mesh read, the initial state made): throws
+   * the InputError naming output/folder that the folder deserves (it holds a previous
+   * run's results and neither overwrite nor resume was asked for), after
+   * undo_creation(); nothing otherwise. Until then the refusal waits, so that a case
+   * with a bad input is refused for its input, not for its folder.
+   */
+  void accept_folder ();
+
+  /**
    * The new run's input and mesh are accepted and it replaces a previous run: removes
    * that run's checkpoint (checkpoint, checkpoint.previous, checkpoint.partial) and
    * its field files (with fields.xdmf and fields.pvd), spectrum.csv, ect_spectrum.csv,
@@ -53,6 +62,8 @@ private:
   bool                     replacing        = false; // a previous run's results are here
   bool                     created_lockfile = false;
   int                      descriptor       = -1;
+  std::string              refusal; // the folder's, until accept_folder()
+  MPI_Comm                 communicator;
   std::vector<std::string> created_folders; // deepest first
 };
 } // namespace wetbed

@@ -79,8 +79,10 @@ public:
   RunEnd run ();
 
   /** Reads the mesh, sets up and imposes the initial state, or with checkpoint/resume
-   * the saved state (run() calls it). */
-  void initialize ();
+   * the saved state (run() calls it). A new run calls `before_writing` once its input
+   * has been checked whole, before it opens its output files (the output folder's
+   * verdict). */
+  void initialize (const std::function<void ()> &before_writing = {});
 
   /** Saves the run state in <output folder>/checkpoint (Checkpointing); collective. */
   void write_checkpoint ();
