@@ -182,6 +182,7 @@ cases = [
     ("gravity 1e999", "subsection physical properties\n set gravity = 0, -1e999, 0\nend", "physical properties/gravity"),
     ("particle diameter inf", "subsection physical properties\n set particle diameter = inf\nend", "particle diameter"),
     ("Nitsche penalty inf", "subsection boundary conditions\n set Nitsche penalty = inf\nend", "Nitsche penalty"),
+    ("subnormal cfl target (fuzz finding)", "subsection time stepping\n set cfl target = 4.9e-324\nend", "time stepping/cfl target"),
     ("inlet velocity for a group that is no inlet", "subsection boundary conditions\n set inlet velocities = jet: 2\nend", "boundary conditions/inlet velocities"),
     ("inlet velocity and mass flow for one group", "subsection boundary conditions\n set inlet velocities = inlet: 2\n set inlet mass flow rates = inlet: 0.01\nend", "boundary conditions/inlet mass flow rates"),
     ("inlet velocity not an expression", "subsection boundary conditions\n set inlet velocities = inlet: 2*(x\nend", "boundary conditions/inlet velocities"),

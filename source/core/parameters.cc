@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -652,11 +653,17 @@ void check_finite_values (const std::vector<std::pair<std::string, std::string>>
       {
         if (!item.empty ())
         {
-          char        *end    = nullptr;
-          const double number = std::strtod (item.c_str (), &end);
-          require (end == nullptr || *end != '\0' || std::isfinite (number),
+          char *end            = nullptr;
+          errno                = 0;
+          const double number  = std::strtod (item.c_str (), &end);
+          const bool   numeric = end != nullptr && *end == '\0';
+          require (!numeric || std::isfinite (number),
                    where,
                    "'" + item + "' is not a finite number");
+          // deal.II refuses what strtod can only round to a subnormal or to 0
+          require (!numeric || errno != ERANGE,
+                   where,
+                   "'" + item + "' is too small to be represented (below 2.2e-308)");
         }
         item.clear ();
       }
