@@ -132,10 +132,10 @@ def dominant_frequency(t, signal, start_up):
     return float(frequencies[1 + numpy.argmax(spectrum[1:])])
 
 
-def replace_doc_section(root, key, title, lines):
+def replace_doc_section(root, key, title, lines, doc_name="benchmarks.md"):
     """Replaces the block between <!-- KEY:begin --> and <!-- KEY:end --> of
-    doc/benchmarks.md with LINES (appended under `## TITLE` if absent)."""
-    doc = os.path.join(root, "doc", "benchmarks.md")
+    doc/DOC_NAME (doc/benchmarks.md) with LINES (appended under `## TITLE` if absent)."""
+    doc = os.path.join(root, "doc", doc_name)
     text = open(doc).read() if os.path.isfile(doc) else "# Benchmarks\n"
     begin, end = f"<!-- {key}:begin -->", f"<!-- {key}:end -->"
     section = begin + "\n" + "\n".join(lines) + "\n" + end
@@ -144,7 +144,7 @@ def replace_doc_section(root, key, title, lines):
     else:
         text += f"\n## {title}\n\n" + section + "\n"
     open(doc, "w").write(text)
-    print("updated doc/benchmarks.md")
+    print(f"updated doc/{doc_name}")
 
 
 def timer_seconds(text, name):

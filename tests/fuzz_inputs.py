@@ -28,6 +28,9 @@ Anything else is a finding (a signal, 134/139, an abort trace, `terminate called
 assertion, a timeout, status 1 or another code, a multi-line error, a folder left behind
 or changed). One line per mutant; a failing mutant's .prm (and .geo, and its stderr) is
 kept in WORK_DIR/findings/; exit status 1 if anything failed.
+
+benchmarks/fuzz_inputs.py runs the long campaign (2,000 mutants) with this file's
+configure(), prepare(), check_mutant() and finding_class().
 """
 import argparse
 import hashlib
@@ -52,16 +55,26 @@ parser.add_argument("--only", default="", help="comma-separated mutant numbers t
 parser.add_argument("--dry-run", action="store_true", help="write and list the mutants, run nothing")
 parser.add_argument("--memory-limit-gb", type=float, default=6,
                     help="address-space limit of each run and its gmsh (0: none)")
-args = parser.parse_args()
-wetbed, source, work = (os.path.abspath(a) for a in (args.wetbed, args.source, args.work))
-
-# the cheap 2D cases; column_3d.prm only for the mismatched dimension (refused before a step)
-CASES = [c for c in ("quick_start_2d.prm", "bubbling_bed_2d.prm", "wet_column_2d.prm",
-                     "couette_cell_2d.prm", "seed003_bed_2d.prm")
-         if os.path.isfile(os.path.join(source, "prm", c))]
 CASE_3D = "column_3d.prm"
-MESH_DIR = os.path.join(source, "meshes")
-MUTANTS, OUT, FINDINGS = (os.path.join(work, d) for d in ("mutants", "out", "findings"))
+args = wetbed = source = work = CASES = MESH_DIR = MUTANTS = OUT = FINDINGS = None
+
+
+def configure(argv=None):
+    """Parses ARGV (the command line when None) into the module's settings: args, the
+    paths, the cases found in SOURCE_DIR/prm (benchmarks/fuzz_inputs.py imports this file
+    and calls it with its own list). Returns args."""
+    global args, wetbed, source, work, CASES, MESH_DIR, MUTANTS, OUT, FINDINGS
+    args = parser.parse_args(argv)
+    wetbed, source, work = (os.path.abspath(a) for a in (args.wetbed, args.source, args.work))
+    # the cheap 2D cases; column_3d.prm only for the mismatched dimension (refused before a step)
+    CASES = [c for c in ("quick_start_2d.prm", "bubbling_bed_2d.prm", "wet_column_2d.prm",
+                         "couette_cell_2d.prm", "seed003_bed_2d.prm")
+             if os.path.isfile(os.path.join(source, "prm", c))]
+    MESH_DIR = os.path.join(source, "meshes")
+    MUTANTS, OUT, FINDINGS = (os.path.join(work, d) for d in ("mutants", "out", "findings"))
+    return args
+
+
 env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1", OMP_NUM_THREADS="1")
 
 # parameters the overrides set (a mutation of them would always be undone) and those of
@@ -163,6 +176,8 @@ def number_mutation(rng, text, kinds, time_stepping_allowed=True):
             if lines[i].strip() == "subsection time stepping":
                 lines.insert(i + 1, f"  set {key} = {new}")
                 return "\n".join(lines), f"added time stepping/{key} = {new} ({how})", {("time stepping", key)}
+    if not candidates:  # a stack's earlier truncation left no number
+        return text, "no number left to change", set()
     i, sub, key, m = rng.choice(candidates)
     new, how = mutate_number(rng, m.group(0), kind)
     lines[i] = lines[i][:m.start()] + new + lines[i][m.end():]
@@ -173,6 +188,8 @@ def line_mutation(rng, text, kind):
     lines = text.split("\n")
     picks = meaningful(text)
     rows = parse(text)
+    if not picks:  # a stack's earlier truncation left no line
+        return text, f"no line left to {kind}", set()
     i = rng.choice(picks)
     touched = {(rows[i][1], rows[i][2])}
     if kind == "delete":
@@ -191,6 +208,8 @@ def line_mutation(rng, text, kind):
 
 def truncate_mutation(rng, text, closing):
     """Cut the file: at any character, or at a line boundary with the open subsections closed."""
+    if len(text) < 2 or "\n" not in text:  # a stack's earlier truncation left (almost) nothing
+        return text, "nothing left to truncate", set()
     if not closing:
         n = rng.randrange(len(text))
         return text[:n], f"truncated at character {n} of {len(text)} (mid-line: {short(text[:n].split(chr(10))[-1], 30)})", set()
@@ -225,6 +244,8 @@ def unicode_mutation(rng, text):
     u = rng.choice(UNICODE)
     where = rng.choice(["value", "name", "minus", "anywhere"])
     sets = [i for i, sub, key in rows if key and not masked(sub, key)]
+    if not sets:  # a stack's earlier truncation left no `set` line
+        where = "anywhere"
     if where == "minus":
         minus = [i for i in sets if "-" in lines[i].split("=", 1)[1]]
         if minus:
@@ -249,6 +270,8 @@ def geo_mutation(rng, geo):
     lines = geo.split("\n")
     code = [i for i, l in enumerate(lines) if l.strip() and not l.strip().startswith("//")]
     if kind in ("delete", "duplicate", "swap"):
+        if not code:  # the first of two damages truncated the file
+            return geo, f"no .geo line left to {kind}"
         i = rng.choice(code)
         if kind == "delete":
             gone = lines.pop(i)
@@ -261,11 +284,15 @@ def geo_mutation(rng, geo):
         return "\n".join(lines), f"swapped .geo lines {i + 1} and {j + 1}"
     if kind in ("scale", "sign", "zero", "special"):
         spots = [(i, m) for i in code for m in NUMBER.finditer(lines[i])]
+        if not spots:
+            return geo, "no .geo number left to change"
         i, m = rng.choice(spots)
         new, how = mutate_number(rng, m.group(0), kind)
         lines[i] = lines[i][:m.start()] + new + lines[i][m.end():]
         return "\n".join(lines), f".geo line {i + 1}: {m.group(0)} -> {new} ({how}) in {short(lines[i], 40)}"
     if kind == "truncate":
+        if not geo:
+            return geo, "nothing of the .geo left to truncate"
         n = rng.randrange(len(geo))
         return geo[:n], f".geo truncated at character {n} of {len(geo)}"
     if kind == "bytes":
@@ -437,19 +464,94 @@ def judge(code, err, folder, before, prm_path):
     return f"status {code}: {tail}"
 
 
-def main():
+def finding_class(code, why):
+    """The class of a finding (WHY from judge() non-empty): crash, hang, error message
+    (several lines, or one that is not `wetbed: error: ...` naming something), folder (an
+    output folder created, changed or incomplete) or status (1, 4, 5, ...)."""
+    if code is None:
+        return "hang"
+    if code < 0 or why.startswith(f"status {code} with '"):
+        return "crash"
+    if why.startswith(("status 2 with", "status 2, the line")):
+        return "error message"
+    if why.startswith(("status 0 without", "status 3 without", "status 2 created", "status 2 changed")):
+        return "folder"
+    return "status"
+
+
+def prepare():
+    """Empties WORK_DIR's mutants/, out/ and findings/ and (unless --dry-run) runs the
+    unmutated first case into WORK_DIR/base_results, the previous run's results of the
+    mutants that write into an existing folder. Returns (base folder, ok, status, stderr,
+    seconds): ok unless that run failed (a status other than 0, or no monitors.csv)."""
     for d in (MUTANTS, OUT, FINDINGS):
         shutil.rmtree(d, ignore_errors=True)
         os.makedirs(d)
-    started = time.time()
-    # a previous run's results, for the mutants that write into an existing folder
     base = os.path.join(work, "base_results")
+    if args.dry_run:
+        return base, True, 0, "", 0.0
+    shutil.rmtree(base, ignore_errors=True)
+    prm = os.path.join(MUTANTS, "base.prm")
+    write(prm, with_mesh(read(os.path.join(source, "prm", CASES[0]))) + overrides(base, set(), False))
+    code, _, err, seconds = run(prm)
+    return base, code == 0 and os.path.isfile(os.path.join(base, "monitors.csv")), code, err, seconds
+
+
+def check_mutant(index, base):
+    """Writes mutant INDEX into WORK_DIR/mutants and (unless --dry-run) runs and judges it;
+    a finding's .prm (and .geo) and its stderr are kept in WORK_DIR/findings, an allowed
+    outcome's output folder is removed. Returns a dict: index, category, label, ran,
+    status (None on a hang), why ('' if allowed), seconds, kept (the finding's files),
+    stderr, and line (main's line for it)."""
+    description, text, geo, touched = make_mutant(index)
+    label = f"#{index:03d} {description}"
+    name = f"{index:03d}"
+    result = {"index": index, "category": CATEGORIES[index % len(CATEGORIES)], "label": label,
+              "ran": False, "status": None, "why": "", "seconds": 0.0, "kept": [], "stderr": ""}
+    folder = os.path.join(OUT, name)
+    existing = index % 2 == 1
+    geo_path = None
+    if geo is not None:
+        geo_path = os.path.join(MUTANTS, name + ".geo")
+        write(geo_path, geo)
+        text = re.sub(r"(?m)^(\s*set\s+file\s*=\s*).*$", lambda m: m.group(1) + geo_path, text)
+    prm_path = os.path.join(MUTANTS, name + ".prm")
+    write(prm_path, with_mesh(text) + overrides(folder, touched, existing))
+    if args.dry_run:
+        result["line"] = f"dry  {label}"
+        return result
+    before = None
+    if existing:
+        shutil.copytree(base, folder)
+        before = folder_digest(folder)
+    code, out, err, seconds = run(prm_path)
+    why = judge(code, err, folder, before, prm_path)
+    result.update(ran=True, status=code, why=why, seconds=seconds, stderr=err)
+    if why:
+        kept = [os.path.join(FINDINGS, name + ".prm")]
+        shutil.copy(prm_path, kept[0])
+        if geo_path:
+            kept.append(os.path.join(FINDINGS, name + ".geo"))
+            shutil.copy(geo_path, kept[-1])
+        kept.append(os.path.join(FINDINGS, name + ".txt"))
+        with open(kept[-1], "w") as f:
+            f.write(f"{label}\n{why}\nstatus {code}, {seconds:.1f} s, output folder {folder}"
+                    f"{' (held results, overwrite = true)' if existing else ''}\n"
+                    f"--- stderr ---\n{err[-4000:]}\n--- stdout (tail) ---\n{out[-4000:]}\n")
+        result["kept"] = kept
+        result["line"] = f"FAIL {label}: {why} [{seconds:.1f} s]"
+    else:
+        first = err.strip().split("\n")[-1][:160] if code else ""
+        result["line"] = f"ok   {label} -> status {code} [{seconds:.1f} s]{'  ' + first if first else ''}"
+        shutil.rmtree(folder, ignore_errors=True)  # keep WORK_DIR small: a finding's folder stays
+    return result
+
+
+def main():
+    started = time.time()
+    base, ok, code, err, seconds = prepare()
     if not args.dry_run:
-        shutil.rmtree(base, ignore_errors=True)
-        prm = os.path.join(MUTANTS, "base.prm")
-        write(prm, with_mesh(read(os.path.join(source, "prm", CASES[0]))) + overrides(base, set(), False))
-        code, _, err, seconds = run(prm)
-        if code != 0 or not os.path.isfile(os.path.join(base, "monitors.csv")):
+        if not ok:
             print(f"the unmutated {CASES[0]} failed (status {code}): {err.strip()[-400:]}")
             return 1
         print(f"base run of {CASES[0]}: {seconds:.1f} s")
@@ -458,41 +560,10 @@ def main():
     for index in range(args.count):
         if only and index not in only:
             continue
-        description, text, geo, touched = make_mutant(index)
-        label = f"#{index:03d} {description}"
-        name = f"{index:03d}"
-        folder = os.path.join(OUT, name)
-        existing = index % 2 == 1
-        geo_path = None
-        if geo is not None:
-            geo_path = os.path.join(MUTANTS, name + ".geo")
-            write(geo_path, geo)
-            text = re.sub(r"(?m)^(\s*set\s+file\s*=\s*).*$", lambda m: m.group(1) + geo_path, text)
-        prm_path = os.path.join(MUTANTS, name + ".prm")
-        write(prm_path, with_mesh(text) + overrides(folder, touched, existing))
-        if args.dry_run:
-            print(f"dry  {label}")
-            continue
-        before = None
-        if existing:
-            shutil.copytree(base, folder)
-            before = folder_digest(folder)
-        code, out, err, seconds = run(prm_path)
-        why = judge(code, err, folder, before, prm_path)
-        if why:
-            failures.append(label)
-            print(f"FAIL {label}: {why} [{seconds:.1f} s]", flush=True)
-            shutil.copy(prm_path, os.path.join(FINDINGS, name + ".prm"))
-            if geo_path:
-                shutil.copy(geo_path, os.path.join(FINDINGS, name + ".geo"))
-            with open(os.path.join(FINDINGS, name + ".txt"), "w") as f:
-                f.write(f"{label}\n{why}\nstatus {code}, {seconds:.1f} s, output folder {folder}"
-                        f"{' (held results, overwrite = true)' if existing else ''}\n"
-                        f"--- stderr ---\n{err[-4000:]}\n--- stdout (tail) ---\n{out[-4000:]}\n")
-        else:
-            first = err.strip().split("\n")[-1][:160] if code else ""
-            print(f"ok   {label} -> status {code} [{seconds:.1f} s]{'  ' + first if first else ''}", flush=True)
-            shutil.rmtree(folder, ignore_errors=True)  # keep WORK_DIR small: a finding's folder stays
+        result = check_mutant(index, base)
+        print(result["line"], flush=result["ran"])
+        if result["why"]:
+            failures.append(result["label"])
     n = len(only) if only else args.count
     print(f"{n} mutants (seed {args.seed}) in {time.time() - started:.0f} s: {len(failures)} findings"
           + (f", kept in {FINDINGS}" if failures else ""))
@@ -500,4 +571,5 @@ def main():
 
 
 if __name__ == "__main__":
+    configure()
     sys.exit(main())
