@@ -5,7 +5,7 @@ usage: fuzz_inputs.py [--count 2000] [--seed 7] [--timeout S] [--memory-limit-gb
                       [--time-limit S] [--work DIR] [--wetbed PATH] [--write-doc]
 
 Runs the mutants 0 .. COUNT-1 of tests/fuzz_inputs.py (the ctest `fuzz_inputs` runs the
-first 40 of seed 1) with that file's generator and judge, imported from it: each mutant
+first 100 of seed 1) with that file's generator and judge, imported from it: each mutant
 is a cheap 2D case with one kind of damage (or a stack of them), run for a few steps,
 and must end with status 0 (ran), 2 (one `wetbed: error:` line, the output folder not
 created or unchanged) or 3 (numerical failure with failure_report.txt). Anything else is
@@ -55,12 +55,12 @@ FINDING_COLUMNS = [("crash", "crash"), ("hang", "hang"), ("error message", "mult
 
 
 def table(results):
-    head = ["mutation", "mutants", "status 0", "status 2", "status 3"] + [c[1] for c in FINDING_COLUMNS]
+    head = ["mutation", "mutants", "status 0", "status 2", "status 3", "slow"] + [c[1] for c in FINDING_COLUMNS]
     lines = ["| " + " | ".join(head) + " |", "|" + "---|" + "---:|" * (len(head) - 1)]
     total = [0] * (len(head) - 1)
     for category in fuzz.CATEGORIES:
         rows = [r for r in results if r["category"] == category]
-        counts = [len(rows)] + [sum(1 for r in rows if not r["why"] and r["status"] == s) for s in (0, 2, 3)]
+        counts = [len(rows)] + [sum(1 for r in rows if not r["why"] and r["status"] == s) for s in (0, 2, 3, None)]
         counts += [sum(1 for r in rows if r["why"] and r["class"] == c) for c, _ in FINDING_COLUMNS]
         total = [a + b for a, b in zip(total, counts)]
         lines.append(f"| {category} | " + " | ".join(str(c) for c in counts) + " |")
@@ -101,14 +101,16 @@ def main():
 
     lines, total = table(results)
     minutes = f"{int(wall // 60)} min {wall % 60:.0f} s"
-    allowed = total[1] + total[2] + total[3]
+    allowed = total[1] + total[2] + total[3] + total[4]
     reading = (
         f"{count} mutants of the shipped 2D cases (seed {args.seed}; tests/fuzz_inputs.py's generator and judge, "
-        f"the ctest `fuzz_inputs` runs the first 40 of seed 1), each a few steps long, the 12 mutation kinds "
+        f"the ctest `fuzz_inputs` runs the first 100 of seed 1), each a few steps long, the 12 mutation kinds "
         f"taken in turn. {allowed} ended as allowed: {total[1]} ran (status 0), {total[2]} stopped with one "
         f"`wetbed: error:` line naming the parameter or file and the output folder untouched (status 2), "
-        f"{total[3]} stopped with failure_report.txt (status 3). The last five columns are the findings "
-        f"(a signal or abort trace, no exit within {args.timeout:g} s, an error of several lines or one that "
+        f"{total[3]} stopped with failure_report.txt (status 3), {total[4]} were still computing at the "
+        f"{args.timeout:g} s timeout (slow: a valid case too large for it, at least half a core busy over its "
+        f"last 10 s). The last five columns are the findings "
+        f"(a signal or abort trace, no exit within {args.timeout:g} s and idle, an error of several lines or one that "
         f"names nothing, an output folder created, changed or without its results, any other status): "
         f"{len(findings)} in all.")
     summary = textwrap.wrap(reading, 100, break_on_hyphens=False) + [""] + lines + [

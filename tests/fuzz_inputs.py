@@ -23,9 +23,11 @@ Each mutant must end with
   0: it ran (monitors.csv written);
   2: exactly one line on stderr, `wetbed: error: ...`, naming a `subsection/parameter`, a
      path or a file; the output folder not created (or, if it held results, unchanged);
-  3: a numerical failure, failure_report.txt in the output folder.
+  3: a numerical failure, failure_report.txt in the output folder;
+  slow: still computing at the timeout (at least half a core busy over its last 10 s): a
+     valid case too large for the timeout, e.g. a mesh size parameter scaled by 1e3.
 Anything else is a finding (a signal, 134/139, an abort trace, `terminate called`, an
-assertion, a timeout, status 1 or another code, a multi-line error, a folder left behind
+assertion, a timeout with the run idle (a hang), status 1 or another code, a multi-line error, a folder left behind
 or changed). One line per mutant; a failing mutant's .prm (and .geo, and its stderr) is
 kept in WORK_DIR/findings/; exit status 1 if anything failed.
 
@@ -401,25 +403,53 @@ def limits():
         resource.setrlimit(resource.RLIMIT_AS, (n, n))
 
 
+def group_cpu_seconds(session):
+    """CPU seconds used so far by the live processes of SESSION (wetbed and its gmsh)."""
+    total = 0
+    for entry in os.listdir("/proc"):
+        if not entry.isdigit():
+            continue
+        try:
+            fields = open(f"/proc/{entry}/stat").read().rsplit(")", 1)[1].split()
+        except (OSError, IndexError):
+            continue
+        if int(fields[3]) == session:  # field 6 of stat: the session id
+            total += int(fields[11]) + int(fields[12])  # utime + stime
+    return total / os.sysconf("SC_CLK_TCK")
+
+
+BUSY_WINDOW = 10.0  # s: how long before the timeout the CPU use is measured
+
+
 def run(prm):
-    """(status or None on a timeout, stdout, stderr, seconds); the whole process group
-    (wetbed and the gmsh it starts) goes on a timeout."""
+    """(status or None on a timeout, stdout, stderr, seconds, busy); the whole process
+    group (wetbed and the gmsh it starts) goes on a timeout. BUSY: on a timeout, the share
+    of a core the group used in the last BUSY_WINDOW seconds (a run still computing, e.g.
+    a valid but huge mesh, is not a hang: a hang waits, idle)."""
     start = time.time()
     p = subprocess.Popen([wetbed, prm], stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env,
                          cwd=work, start_new_session=True, preexec_fn=limits)
+    busy = 0.0
+    window = min(BUSY_WINDOW, args.timeout / 2)
     try:
-        out, err = p.communicate(timeout=args.timeout)
+        out, err = p.communicate(timeout=args.timeout - window)
         code = p.returncode
     except subprocess.TimeoutExpired:
-        os.killpg(p.pid, signal.SIGKILL)
-        out, err = p.communicate()
-        code = None
+        cpu = group_cpu_seconds(p.pid)
+        try:
+            out, err = p.communicate(timeout=window)
+            code = p.returncode
+        except subprocess.TimeoutExpired:
+            busy = (group_cpu_seconds(p.pid) - cpu) / window
+            os.killpg(p.pid, signal.SIGKILL)
+            out, err = p.communicate()
+            code = None
     try:  # a gmsh left behind by wetbed
         os.killpg(p.pid, signal.SIGKILL)
     except (ProcessLookupError, PermissionError):
         pass
     dec = lambda b: b.decode("utf-8", "replace")
-    return code, dec(out), dec(err), time.time() - start
+    return code, dec(out), dec(err), time.time() - start, busy
 
 
 CRASH = ("terminate called", "Assertion", "An error occurred in line", "Segmentation fault", "Aborted",
@@ -428,13 +458,15 @@ CRASH = ("terminate called", "Assertion", "An error occurred in line", "Segmenta
 NAMES_SOMETHING = re.compile(r"/|\b[\w.\-]+\.(?:prm|geo|msh)\b")
 
 
-def judge(code, err, folder, before, prm_path):
-    """'' if the outcome is one of the three allowed, else why not."""
+def judge(code, err, folder, before, prm_path, busy=0.0):
+    """'' if the outcome is one of the allowed, else why not. A timeout is allowed only
+    while the run still computes (BUSY >= 0.5 of a core): a valid case too large for the
+    timeout (a mesh parameter scaled by 1e3), reported as `slow`."""
     lines = [l for l in err.strip().split("\n") if l.strip()]
     tail = " | ".join(lines[-3:])[-400:]
     crash = [c for c in CRASH if c in err]
     if code is None:
-        return f"hang: no exit within {args.timeout:g} s"
+        return "" if busy >= 0.5 else f"hang: no exit within {args.timeout:g} s, idle ({busy:.0%} of a core)"
     if code < 0:
         return f"killed by signal {signal.Signals(-code).name} ({code}): {tail}"
     if crash:
@@ -493,7 +525,7 @@ def prepare():
     shutil.rmtree(base, ignore_errors=True)
     prm = os.path.join(MUTANTS, "base.prm")
     write(prm, with_mesh(read(os.path.join(source, "prm", CASES[0]))) + overrides(base, set(), False))
-    code, _, err, seconds = run(prm)
+    code, _, err, seconds, _ = run(prm)
     return base, code == 0 and os.path.isfile(os.path.join(base, "monitors.csv")), code, err, seconds
 
 
@@ -524,8 +556,8 @@ def check_mutant(index, base):
     if existing:
         shutil.copytree(base, folder)
         before = folder_digest(folder)
-    code, out, err, seconds = run(prm_path)
-    why = judge(code, err, folder, before, prm_path)
+    code, out, err, seconds, busy = run(prm_path)
+    why = judge(code, err, folder, before, prm_path, busy)
     result.update(ran=True, status=code, why=why, seconds=seconds, stderr=err)
     if why:
         kept = [os.path.join(FINDINGS, name + ".prm")]
@@ -542,7 +574,8 @@ def check_mutant(index, base):
         result["line"] = f"FAIL {label}: {why} [{seconds:.1f} s]"
     else:
         first = err.strip().split("\n")[-1][:160] if code else ""
-        result["line"] = f"ok   {label} -> status {code} [{seconds:.1f} s]{'  ' + first if first else ''}"
+        outcome = f"status {code}" if code is not None else f"slow: still computing at the timeout ({busy:.0%} of a core)"
+        result["line"] = f"ok   {label} -> {outcome} [{seconds:.1f} s]{'  ' + first if first else ''}"
         shutil.rmtree(folder, ignore_errors=True)  # keep WORK_DIR small: a finding's folder stays
     return result
 

@@ -21,6 +21,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 using namespace wetbed;
@@ -471,15 +472,20 @@ std::vector<unsigned int> numbers (const std::string &list)
 //         nonlinear closures; 2D two-fluid, second mesh: 2.3e-7 apart measured, and
 //         2.2e-5 with FGMRES to 1e-10, whose residual leaves ~4e-10 of the O(1) fields
 //         against errors of 1.6e-5), or to --reference-tolerance=X
+//   --check-runs=N: the operator check of EXTRA_SETTINGS (`check operator = true`) on
+//         the first N runs of the ladder only (its cost grows with the assembled matrix;
+//         the check is per assembly, not per mesh size)
 int main (int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi (argc, argv, 1);
   std::string                              reference_settings;
-  unsigned int                             reference_runs      = 2;
-  double                                   reference_tolerance = 1e-5;
+  unsigned int                             reference_runs = 2;
+  unsigned int check_runs          = std::numeric_limits<unsigned int>::max ();
+  double       reference_tolerance = 1e-5;
   {
     const std::string flag = "--reference=", runs_flag = "--reference-runs=",
-                      tolerance_flag = "--reference-tolerance=";
+                      tolerance_flag = "--reference-tolerance=",
+                      check_flag     = "--check-runs=";
     int kept                         = 1;
     for (int i = 1; i < argc; ++i)
     {
@@ -490,6 +496,8 @@ int main (int argc, char **argv)
         reference_runs = std::stoul (argument.substr (runs_flag.size ()));
       else if (argument.rfind (tolerance_flag, 0) == 0)
         reference_tolerance = std::stod (argument.substr (tolerance_flag.size ()));
+      else if (argument.rfind (check_flag, 0) == 0)
+        check_runs = std::stoul (argument.substr (check_flag.size ()));
       else
         argv[kept++] = argv[i];
     }
@@ -587,7 +595,14 @@ int main (int argc, char **argv)
   std::vector<double>                sizes;
   for (const auto &[level, n_steps] : runs)
   {
-    const auto [e, n_cells] = run_case (level, n_steps, extra_settings, "");
+    const bool checked = errors.size () < check_runs;
+    const auto [e, n_cells] =
+        run_case (level,
+                  n_steps,
+                  extra_settings + (checked ? ""
+                                            : "subsection linear solver\n set check "
+                                              "operator = false\nend\n"),
+                  "");
     // the hanging nodes are there: more cells than the uniform mesh of the level (the
     // square has 16 cells at level 0), fewer than the next level's
     if (hanging)

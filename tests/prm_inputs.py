@@ -63,11 +63,13 @@ def with_mesh(text, prm_file):
     return "\n".join(out) + "\n"
 
 
-# 1. every shipped case parses and runs a few steps; the large seed column (35,640 cells)
-# and the spouted bed on coarser meshes of the same geometry: their parameters are what is
+# 1. every shipped case parses and runs a few steps; the seed columns (2,640 and 35,640
+# cells) and the spouted bed on coarser meshes of the same geometry: their parameters are what is
 # checked here
 COARSER = {"seed000_large_column.prm": "subsection mesh\n set geometry parameters = radius: 0.075, height: 1.5, "
                                        "n_core: 3, n_ring: 2, n_layers: 30\nend\n",
+           "seed000_small_column.prm": "subsection mesh\n set geometry parameters = radius: 0.025, height: 1.0, "
+                                       "n_core: 3, n_ring: 2, n_layers: 20\nend\n",
            # the spouted bed's jet (144 m/s) takes steps of ~5 us: 60 of them on 9 x 40 cells
            "seed004_spouted_bed.prm": "subsection mesh\n set geometry parameters = n_side: 4, ny: 40\nend\n"}
 for prm in sorted(os.listdir(os.path.join(source, "prm"))):
