@@ -116,14 +116,12 @@ end
     print(row, flush=True)
 
 lines = [f"Command: `python3 benchmarks/examples_cost.py` (each case {'serial' if args.ranks == 1 else f'on {args.ranks} ranks'} for the",
-         "span shown, fields as HDF5; wall time of the whole run, set-up included, and its CPU",
-         "time; load: the 1-minute load average of the 2-core machine at the start or end",
-         "of the run, whichever is higher — above 2 other jobs shared the cores and the wall",
-         "time is an upper bound; the CPU time is the wall time of a serial run on an idle",
-         "core). Extrapolated: CPU s per simulated s times the case's end time.", "",
+         "span shown, fields as HDF5). Wall s: the whole run, set-up included; CPU s: its CPU",
+         "time, the figure to compare (the wall time of a serial run on an idle core).",
+         "Extrapolated: CPU s per simulated s times the case's end time.", "",
          "| case | cells | ranks | simulated | steps | wall s | CPU s | CPU s per simulated s | "
-         "whole run (end time) | load |",
-         "|---|---|---|---|---|---|---|---|---|---|"]
+         "whole run (end time) |",
+         "|---|---|---|---|---|---|---|---|---|"]
 for case in SPANS:
     path = os.path.join(args.work, case + ".json")
     if not os.path.exists(path):
@@ -133,7 +131,7 @@ for case in SPANS:
     whole = (f"measured: {r['cpu'] / 60:.1f} min CPU ({r['end_time']:g} s)" if abs(r["span"] - r["end_time"]) < 1e-12
              else f"extrapolated: {per * r['end_time'] / 60:.0f} min CPU ({r['end_time']:g} s)")
     lines.append(f"| {case} | {r['cells']} | {r['ranks']} | {r['simulated']:.3g} s | {r['steps']} | "
-                 f"{r['wall']:.0f} | {r['cpu']:.0f} | {per:.0f} | {whole} | {r['load']:.1f} |")
+                 f"{r['wall']:.0f} | {r['cpu']:.0f} | {per:.0f} | {whole} |")
 table = "\n".join(lines)
 print(table)
 if not args.no_doc:

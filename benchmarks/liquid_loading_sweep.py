@@ -158,8 +158,7 @@ def number(value, form):
     return "–" if value is None or (isinstance(value, float) and math.isnan(value)) else format(value, form)
 
 
-lines = [f"## Liquid-loading sweep (prm/wet_column_2d.prm, 600 cells, serial, {args.jobs} at a time)",
-         f"Command: `python3 benchmarks/liquid_loading_sweep.py --end-time {args.end_time:g} --start-up {args.start_up:g} --jobs {args.jobs}"
+lines = [f"Command: `python3 benchmarks/liquid_loading_sweep.py --end-time {args.end_time:g} --start-up {args.start_up:g} --jobs {args.jobs}"
          + (f" --maximum-wet-viscosity {args.maximum_wet_viscosity:g}" if cap else "") + "`"
          " (resumable: a stopped run continues from its checkpoint; wall time summed over the pieces). Means over"
          f" t > {args.start_up:g} s; the stress split is the share of each part in the summed solids shear"

@@ -566,6 +566,19 @@ check("no shell: $(...) in the mesh and folder names", code == 0 and not os.path
       and not os.path.exists(os.path.join(work, "x")) and os.path.isfile(os.path.join(shell_dir, "out $(touch y)", "mesh.msh")),
       f"exit {code} '{last_line(err)}', {pwned} exists: {os.path.exists(pwned)}")
 shutil.rmtree(os.path.join(work, "shell $(touch "), ignore_errors=True)
+# fuzz campaign finding #879 (gravity x 1e12): the alpha_s transport asked for ~1e8
+# explicit sub-steps and ran on for ever, deaf to SIGTERM. A step that needs more than
+# 1000 is rejected; the halved steps end the run with status 3 and its report in seconds
+folder = os.path.join(work, "huge_gravity")
+shutil.rmtree(folder, ignore_errors=True)
+started = time.time()
+code, _, err = run(case_into(folder, "subsection physical properties\n set gravity = 0, -9.81e12, 0\nend"), "huge_gravity")
+took = time.time() - started
+report = os.path.join(folder, "failure_report.txt")
+report_text = open(report).read() if os.path.isfile(report) else ""
+check("gravity x 1e12 (fuzz #879): status 3 within 60 s, the transport's sub-steps named",
+      code == 3 and took < 60 and "sub-steps (at most 1000)" in report_text,
+      f"exit {code} after {took:.0f} s '{last_line(err)}', report {'with' if report_text else 'without'} the sub-steps")
 # the spectrum CLI: every option range-checked, non-finite samples refused naming the file
 series = os.path.join(work, "series.csv")
 with open(series, "w") as f:

@@ -206,8 +206,14 @@ unsigned int VolumeFractionTransport<dim>::advance (Vector      &alpha_out,
       stable_dt = std::min (stable_dt, mass.local_element (i) / rate);
   }
   stable_dt = dealii::Utilities::MPI::min (stable_dt, alpha.get_mpi_communicator ());
+  // NaN or a vanishing stable sub-step: infinitely many sub-steps (the cast of a count
+  // beyond unsigned int would be undefined, hence the test in double first)
+  last_required_sub_steps =
+      stable_dt > 0 ? dt / (cfl * stable_dt) : std::numeric_limits<double>::infinity ();
+  if (!(last_required_sub_steps <= max_sub_steps))
+    return dealii::numbers::invalid_unsigned_int;
   const unsigned int n_sub =
-      std::max (1u, static_cast<unsigned int> (std::ceil (dt / (cfl * stable_dt))));
+      std::max (1u, static_cast<unsigned int> (std::ceil (last_required_sub_steps)));
   const double tau = dt / n_sub;
 
   Vector &low = scratch_low, &r_plus = scratch_plus, &r_minus = scratch_minus;

@@ -45,7 +45,8 @@ void print_usage (std::ostream &out)
          "  wetbed --help                  this text\n\n"
          "Results go to `output/folder` of the case: parameters.prm, monitors.csv,\n"
          "fields_*.pvtu. Exit status: 0 done, 1 usage, 2 bad input, 3 run failed,\n"
-         "4 stopped by SIGTERM/SIGINT after writing a checkpoint.\n";
+         "4 stopped by SIGTERM/SIGINT/SIGUSR2 after writing a checkpoint,\n"
+         "5 ended by checkpoint/stall timeout (a rank stopped or lost).\n";
 }
 
 /** The text of an exception on one line (deal.II's messages span several). */

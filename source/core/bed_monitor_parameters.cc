@@ -14,7 +14,7 @@ void BedMonitorParameters::declare_parameters (ParameterHandler &prm)
   prm.declare_entry ("pressure drop between",
                      "",
                      List (Double (0), 0, 2),
-                     "Two heights above the inlet (m): monitors.csv gains "
+                     "Two heights along -gravity from the origin (m): monitors.csv gains "
                      "pressure_drop_<a>_<b>, the cross-section average of p' over the "
                      "cell layer at a minus that at b (a pressure-probe pair as in an "
                      "experiment). Empty: none.");
@@ -29,16 +29,17 @@ void BedMonitorParameters::declare_parameters (ParameterHandler &prm)
                      Anything (),
                      "Points 'x, y[, z]; x, y[, z]; ...' (m): monitors.csv gains "
                      "probe_<i>_alpha_s and probe_<i>_pressure (p') there. Empty: none.");
-  prm.declare_entry ("pressure probe height",
-                     "",
-                     List (Double (0), 0, 1),
-                     "A pressure probe at this height above the inlet (m), as the "
-                     "wall probe of an experiment: monitors.csv gains "
-                     "probe_pressure_drop, the cross-section mean of p' at that height "
-                     "(16 x 16 points) minus the outlet's, and "
-                     "probe_fluidization_index, FI = probe_pressure_drop A / (buoyant "
-                     "bed weight). A dry bubbling bed reads FI = 1 minus the share of "
-                     "the bed below the probe. Empty: none.");
+  prm.declare_entry (
+      "pressure probe height",
+      "",
+      List (Double (0), 0, 1),
+      "A pressure probe at this height along -gravity from the origin (m), as the "
+      "wall probe of an experiment: monitors.csv gains "
+      "probe_pressure_drop, the cross-section mean of p' at that height "
+      "(16 x 16 points) minus the outlet's, and "
+      "probe_fluidization_index, FI = probe_pressure_drop A / (buoyant "
+      "bed weight). A dry bubbling bed reads FI = 1 minus the share of "
+      "the bed below the probe. Empty: none.");
   prm.leave_subsection ();
 }
 

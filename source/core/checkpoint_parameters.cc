@@ -29,13 +29,13 @@ void CheckpointParameters::declare_parameters (ParameterHandler &prm)
   prm.declare_entry ("on signal",
                      "true",
                      Bool (),
-                     "On SIGTERM, SIGINT or SIGUSR2, finish the current time step, write "
-                     "a checkpoint and stop (exit status 4); on SIGUSR1 write a "
-                     "checkpoint after the current step and go on (Slurm's `--signal`). "
-                     "mpirun forwards SIGUSR1/SIGUSR2 to the ranks as they are; a "
-                     "SIGINT/SIGTERM to mpirun itself terminates the ranks before "
-                     "they can write one (the wall time interval covers that). "
-                     "false: the signals' default action.");
+                     "On SIGTERM, SIGINT or SIGUSR2, abandon the time step under way, "
+                     "write a checkpoint of the last completed step and stop (exit "
+                     "status 4); on SIGUSR1 write a checkpoint after the current step "
+                     "and go on (Slurm's `--signal`). mpirun forwards SIGUSR1/SIGUSR2 "
+                     "to the ranks as they are and turns a SIGINT/SIGTERM into SIGTERM "
+                     "to the ranks, which then write the checkpoint within mpirun's "
+                     "grace period. false: the signals' default action.");
   prm.declare_entry ("resume",
                      "false",
                      Bool (),

@@ -24,7 +24,7 @@ void EctSensorParameters::declare_parameters (ParameterHandler &prm)
   prm.declare_entry ("centre height",
                      "0.076",
                      Double (0),
-                     "Height of the slab's centre above the inlet (m).");
+                     "Height of the slab's centre along -gravity from the origin (m).");
   prm.declare_entry (
       "thickness",
       "0.038",
@@ -57,7 +57,7 @@ void EctSensorParameters::parse_parameters (ParameterHandler &prm)
   require_positive (frame_rate, "ECT sensor/frame rate");
   require (centre_height >= thickness / 2,
            "ECT sensor/centre height",
-           "puts the slab below the inlet (centre height " +
+           "puts the slab below the origin (centre height " +
                std::to_string (centre_height) + " m < half the thickness " +
                std::to_string (thickness / 2) + " m)");
 }

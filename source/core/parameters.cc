@@ -138,8 +138,10 @@ void SolidsStressParameters::parse_parameters (ParameterHandler &prm,
 void InitialConditionParameters::declare_parameters (ParameterHandler &prm)
 {
   prm.enter_subsection ("initial conditions");
-  prm.declare_entry (
-      "bed height", "0.05", Double (), "Static bed height (m) above the inlet.");
+  prm.declare_entry ("bed height",
+                     "0.05",
+                     Double (),
+                     "Static bed height (m) along -gravity from the origin.");
   prm.declare_entry ("bed solids fraction", "0.58", Double (), "alpha_s in the bed.");
   prm.declare_entry (
       "freeboard solids fraction", "0", Double (), "alpha_s above the bed.");
@@ -423,7 +425,7 @@ void OutputParameters::declare_parameters (ParameterHandler &prm)
       "probe heights",
       "",
       List (Double (0)),
-      "Heights above the inlet (m) at which monitors.csv records the "
+      "Heights along -gravity from the origin (m) at which monitors.csv records the "
       "cross-section average of alpha_s over the cell layer containing the "
       "height (columns alpha_s_plane_<height>; seed 000 probes 0.076 m); "
       "empty: none.");

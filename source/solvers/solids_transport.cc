@@ -6,6 +6,9 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
 
+#include <iomanip>
+#include <sstream>
+
 namespace wetbed
 {
 using namespace dealii;
@@ -38,10 +41,11 @@ void SolidsTransport<dim>::reinit (const Mapping<dim>              &mapping,
 }
 
 template <int dim>
-void SolidsTransport<dim>::advance (const SolidsTransportInputs<dim> &inputs,
+bool SolidsTransport<dim>::advance (const SolidsTransportInputs<dim> &inputs,
                                     AlphaVector                      &alpha,
                                     BlockVector                      &flow_solution,
-                                    SolveHistory                     &history)
+                                    SolveHistory                     &history,
+                                    std::string                      &reason)
 {
   last_correction_momentum = 0;
   // explicit bounded transport from t_n with the midpoint of u_s^n and u_s*
@@ -73,16 +77,28 @@ void SolidsTransport<dim>::advance (const SolidsTransportInputs<dim> &inputs,
           for (unsigned int i = 0; i < u.size (); ++i)
             u[i] = 0.5 * (u_now[i] + u_before[i]);
         });
-    alpha = inputs.alpha_old;
-    transport.advance (alpha,
-                       inputs.dt,
-                       parameters.time.transport_cfl,
-                       parameters.physical.maximum_packing);
+    AlphaVector transported (inputs.alpha_old);
+    if (transport.advance (transported,
+                           inputs.dt,
+                           parameters.time.transport_cfl,
+                           parameters.physical.maximum_packing) ==
+        numbers::invalid_unsigned_int)
+    {
+      std::ostringstream text;
+      text << "the alpha_s transport would need " << std::setprecision (3)
+           << transport.required_sub_steps () << " sub-steps (at most "
+           << VolumeFractionTransport<dim>::max_sub_steps
+           << "): the solids would cross that many cells in one step";
+      reason = text.str ();
+      return false;
+    }
+    alpha = transported;
   }
   // implicit solids-pressure correction of alpha_s, then of u_s with the same
   // compaction response, so that velocity and packing stay consistent (steps 3-4)
   if (correct_solids_pressure (inputs, flow_solution, alpha, history))
     correct_solids_velocity (inputs, alpha, flow_solution);
+  return true;
 }
 
 template class SolidsTransport<2>;

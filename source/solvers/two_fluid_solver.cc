@@ -519,23 +519,24 @@ bool TwoFluidSolver<dim>::try_time_step (const double dt, const unsigned int bdf
       continue;
     }
     // 2.-3. alpha_s transport and compaction correction (held solids: alpha_s stays)
-    if (!parameters.boundary.hold_solids)
-      solids_transport.advance ({mapping,
-                                 flow_fe,
-                                 flow_dof_handler,
-                                 flow_owned,
-                                 flow_constraints,
-                                 alpha_fe,
-                                 alpha_dof_handler,
-                                 alpha_constraints,
-                                 flow_old,
-                                 alpha_old,
-                                 closure_evaluator,
-                                 bdf,
-                                 dt},
-                                alpha,
-                                flow_solution,
-                                solve_history);
+    if (!parameters.boundary.hold_solids && !solids_transport.advance ({mapping,
+                                                                        flow_fe,
+                                                                        flow_dof_handler,
+                                                                        flow_owned,
+                                                                        flow_constraints,
+                                                                        alpha_fe,
+                                                                        alpha_dof_handler,
+                                                                        alpha_constraints,
+                                                                        flow_old,
+                                                                        alpha_old,
+                                                                        closure_evaluator,
+                                                                        bdf,
+                                                                        dt},
+                                                                       alpha,
+                                                                       flow_solution,
+                                                                       solve_history,
+                                                                       rejection_reason))
+      return false;
     // 4. granular temperature with the new alpha_s and u_s (PDE or local equilibrium);
     //    it also evolves in a held solids velocity field
     if (kinetic_theory && !update_granular_temperature ())

@@ -60,9 +60,21 @@ public:
   void set_velocity (const VelocityAtQuadrature &velocity);
   /**
    * Advances `alpha` (ghosted, in/out) by `dt` with the operator of the last
-   * set_velocity(); returns the number of sub-steps taken.
+   * set_velocity(); returns the number of sub-steps taken. A step that would need more
+   * than `max_sub_steps` (or whose stable sub-step is not a positive finite number)
+   * leaves `alpha` as it was and returns dealii::numbers::invalid_unsigned_int:
+   * the solids would cross that many cells in one flow step, a flow far outside the
+   * step's own speed estimate, which the caller rejects (doc/theory.md, "One time
+   * step"). required_sub_steps() gives the count it would have needed.
    */
   unsigned int advance (Vector &alpha, double dt, double cfl, double alpha_max);
+
+  /** The most explicit sub-steps of one advance() (the shipped cases take 1 to 4). */
+  static constexpr unsigned int max_sub_steps = 1000;
+
+  /** dt / (cfl * stable sub-step) of the last advance(), infinite when nothing
+   * bounds it from below (no stable sub-step could be found). */
+  double required_sub_steps () const { return last_required_sub_steps; }
 
   const Vector &lumped_mass () const { return mass; }
 
@@ -82,6 +94,8 @@ public:
   double bound_activity   = 0; // solids volume held back by the packing limit
 
 private:
+  double last_required_sub_steps = 0;
+
   /** alpha_i += sum_j l_ij G_ij / m_i with l_ij keeping [0, alpha_max]; returns held-back
    * volume. */
   double limit_to_bounds (Vector                                 &alpha,

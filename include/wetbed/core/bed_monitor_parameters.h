@@ -13,7 +13,7 @@ struct BedMonitorParameters
   std::vector<double> pressure_drop_planes;    // two heights, or none
   double              surface_solids_fraction; // of the bed surface definition
   std::vector<std::array<double, 3>> point_probes;
-  double pressure_probe_height = -1; // m above the inlet; < 0: none
+  double pressure_probe_height = -1; // m along -gravity from the origin; < 0: none
 
   static void declare_parameters (dealii::ParameterHandler &prm);
   void        parse_parameters (dealii::ParameterHandler &prm, unsigned int dim);

@@ -9,7 +9,7 @@ namespace wetbed
 struct EctSensorParameters
 {
   bool         enabled;
-  double       centre_height; // m above the inlet
+  double       centre_height; // m along -gravity from the origin
   double       thickness;     // m
   double       frame_rate;    // frames per second
   unsigned int resolution;    // pixels per side of the image

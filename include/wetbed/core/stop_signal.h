@@ -7,7 +7,8 @@
 namespace wetbed
 {
 /** Makes SIGTERM, SIGINT and SIGUSR2 (stop) and SIGUSR1 (checkpoint) only set a flag
- * that the run reads at the end of its current step, instead of killing the process. */
+ * instead of killing the process: a stop abandons the step under way at its next outer
+ * or Krylov iteration, a checkpoint request is served after the current step. */
 void catch_stop_signals ();
 
 /** What the signals received since the last call ask for, on any rank. */

@@ -85,11 +85,15 @@ public:
   /** One outer iteration's solids continuity: `alpha` (ghosted; on entry the alpha_s
    * the momentum solve saw, on exit alpha_s transported from t_n and corrected) and
    * the solids velocity of `flow_solution` (ghosted; corrected where the bed is
-   * compacted, the gas giving way). The correction CG solve goes into `history`. */
-  void advance (const SolidsTransportInputs<dim> &inputs,
+   * compacted, the gas giving way). The correction CG solve goes into `history`.
+   * Returns false, with `alpha` and `flow_solution` as they came and the reason in
+   * `reason`, when the transport would need more than
+   * VolumeFractionTransport::max_sub_steps sub-steps: the step is to be rejected. */
+  bool advance (const SolidsTransportInputs<dim> &inputs,
                 AlphaVector                      &alpha,
                 BlockVector                      &flow_solution,
-                SolveHistory                     &history);
+                SolveHistory                     &history,
+                std::string                      &reason);
 
   /** The lumped mass of the alpha_s space (m^3 per node, m^2 in 2D). */
   const AlphaVector &lumped_mass () const { return transport.lumped_mass (); }

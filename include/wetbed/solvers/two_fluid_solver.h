@@ -73,7 +73,7 @@ public:
   enum class RunEnd
   {
     finished,         // reached the end time
-    stopped_by_signal // SIGTERM/SIGINT: stopped after a step, checkpoint written
+    stopped_by_signal // SIGTERM/SIGINT/SIGUSR2: the last completed step checkpointed
   };
   /** Reads the mesh, sets up and integrates to the end time. */
   RunEnd run ();
