@@ -6,7 +6,11 @@ levels 1, 2, 3 come from the OpenFOAM comparison (its stored runs,
 benchmarks/results/openfoam_comparison/wetbed_<level>.json; run that first); this script
 adds, by default on level 1 and 2:
   - time-step policies: CFL target 0.25 and 1.0 (maximum step 2e-3 s) against 0.5;
-  - the granular temperature algebraic (local equilibrium) instead of the PDE.
+  - the granular temperature algebraic (local equilibrium) instead of the PDE;
+  - outer iterations: a fixed two with every solve to 1e-8 (L<n>_fixed2) against the
+    convergence test at outer tolerance 0.1 (the default) and 0.02 (at most 3); run a
+    level's three side by side for their cost ratios:
+    --runs L1_fixed2 L1_outer0.1 L1_outer0.02 L1_outer0.1_K2 --jobs 4.
 (AMR against uniform meshes is benchmarks/amr_vs_uniform.py.)
 Quantities of interest after --start-up: time-averaged FI and bed surface height; errors:
 FI against the exact 1 and against the finest run (wetbed_3), bed surface against the
@@ -21,6 +25,7 @@ import argparse
 import glob
 import json
 import os
+import re
 from concurrent.futures import ThreadPoolExecutor
 
 from benchmark_setup import bubble_diameter, replace_doc_section, repository_root, run_case
@@ -35,6 +40,16 @@ VARIANTS = {  # name: (level, description, prm sections)
                 "subsection time stepping\n  set cfl target = 1.0\n  set maximum time step = 2e-3\nend\n"),
     "L2_algebraic": (2, "algebraic Θ", "subsection kinetic theory\n  set granular temperature = algebraic\nend\n"),
 }
+# outer iterations (doc/theory.md "Outer iterations"): the fixed two with exact solves
+# against the convergence test; run each level's pair side by side (--jobs 2) for the ratio
+FIXED = "subsection time stepping\n  set outer tolerance = 0\n  set outer iterations = 2\nend\n"
+TESTED = "subsection time stepping\n  set outer tolerance = {}\n  set outer iterations = 3\nend\n"
+for level in (1, 2):
+    VARIANTS[f"L{level}_fixed2"] = (level, "2 outer iterations, solves to 1e-8", FIXED)
+    for tolerance in ("0.1", "0.02"):
+        VARIANTS[f"L{level}_outer{tolerance}"] = (level, f"outer tolerance {tolerance}, ≤ 3",
+                                                  TESTED.format(tolerance))
+    VARIANTS[f"L{level}_outer0.1_K2"] = (level, "outer tolerance 0.1, ≤ 2", TESTED.format("0.1").replace("= 3", "= 2"))
 parser = argparse.ArgumentParser()
 parser.add_argument("--end-time", type=float, default=1.5)
 parser.add_argument("--start-up", type=float, default=0.5)
@@ -57,14 +72,16 @@ def time_mean(rows, column):
 def run(name):
     level, description, sections = VARIANTS[name]
     sections = f"\nsubsection mesh\n  set initial refinement = {level}\nend\n" + sections
-    summary, rows, wall, _ = run_case(root, work, name, "openfoam_fluidisedBed", args.end_time, sections, args.start_up)
+    summary, rows, wall, log = run_case(root, work, name, "openfoam_fluidisedBed", args.end_time, sections, args.start_up)
+    outer = re.findall(r"Outer iterations: ([0-9.]+) per step", open(log).read())
     rows = rows[1:]
     record = {"level": level, "variant": description, "cells": int(rows[-1]["active_cells"]),
               "steps": summary["steps"], "rejected": summary["rejected"], "wall": wall, "end": summary["end"],
               "per_second": wall / summary["end"], "mean_fi": time_mean(rows, "fluidization_index"),
               "mean_surface": time_mean(rows, "bed_surface_height"), "krylov_per_step": summary["krylov"],
               "frequency": summary["frequency"], "bubble_diameter": bubble_diameter(os.path.join(work, name), args.start_up),
-              "start_up": args.start_up, "end_time": args.end_time}
+              "start_up": args.start_up, "end_time": args.end_time,
+              "outer_per_step": float(outer[-1]) if outer else float("nan")}
     with open(os.path.join(results, name + ".json.part"), "w") as f:
         json.dump(record, f)
     os.replace(os.path.join(results, name + ".json.part"), os.path.join(results, name + ".json"))
@@ -82,9 +99,14 @@ records = {}
 for path in sorted(glob.glob(os.path.join(reference, "wetbed_*.json"))):
     r = json.load(open(path))
     level = int(os.path.basename(path)[7:-5])
-    records[f"L{level}"] = dict(r, level=level, variant="CFL 0.5, Δt ≤ 1e-3 s (default)")
+    records[f"L{level}"] = dict(r, level=level, variant="CFL 0.5, Δt ≤ 1e-3 s, 2 outer iterations")
 for path in sorted(glob.glob(os.path.join(results, "*.json"))):
-    records[os.path.basename(path)[:-5]] = json.load(open(path))
+    name = os.path.basename(path)[:-5]
+    records[name] = json.load(open(path))
+    log = os.path.join(work, name + ".log")
+    if "outer_per_step" not in records[name] and os.path.isfile(log):  # a record older than the column
+        outer = re.findall(r"Outer iterations: ([0-9.]+) per step", open(log).read())
+        records[name]["outer_per_step"] = float(outer[-1]) if outer else 2.0
 finest = records.get("L3")
 if finest is None:
     raise SystemExit("no finest run: run benchmarks/openfoam_comparison.py (level 3) first")
@@ -93,16 +115,17 @@ lines = [f"Command: `python3 benchmarks/bed_work_precision.py --end-time {args.e
          "(serial runs, two at a time on this 2-core machine; levels 1–3 at the default settings are the runs of the "
          "OpenFOAM comparison). Case prm/openfoam_fluidisedBed.prm; means after the start-up; errors of FI against the "
          "exact 1 and against the finest run (L3), of the bed surface height against L3.", "",
-         "| run | level (cells) | variant | steps | s per simulated s | FGMRES per step | FI mean | FI − 1 | FI vs L3 | "
+         "| run | level (cells) | variant | steps | s per simulated s | outer iterations per step | FGMRES per step | "
+         "FI mean | FI − 1 | FI vs L3 | "
          "bed surface (m) | surface vs L3 | bubble diameter (mm) | diameter vs L3 | dominant frequency (Hz) |",
-         "|" + "---|" * 14]
+         "|" + "---|" * 15]
 for name in order:
     r = records[name]
     r["fi_error"], r["fi_vs_finest"] = abs(r["mean_fi"] - 1), abs(r["mean_fi"] / finest["mean_fi"] - 1)
     r["surface_error"] = abs(r["mean_surface"] / finest["mean_surface"] - 1)
     r["diameter_error"] = abs(r.get("bubble_diameter", float("nan")) / finest.get("bubble_diameter", float("nan")) - 1)
     lines.append(f"| {name} | {r['level']} ({r['cells']}) | {r['variant']} | {r['steps']} | {r['per_second']:.0f} | "
-                 f"{r['krylov_per_step']:.0f} | {r['mean_fi']:.4f} | {100 * r['fi_error']:.2f}% | "
+                 f"{r.get('outer_per_step', 2.0):.2f} | {r['krylov_per_step']:.0f} | {r['mean_fi']:.4f} | {100 * r['fi_error']:.2f}% | "
                  f"{100 * r['fi_vs_finest']:.2f}% | {r['mean_surface']:.4f} | {100 * r['surface_error']:.2f}% | "
                  f"{1000 * r.get('bubble_diameter', float('nan')):.1f} | {100 * r['diameter_error']:.1f}% | "
                  f"{r.get('frequency', float('nan')):.2f} |")

@@ -63,7 +63,8 @@ case_text (const Case &c, const std::string &source, const std::string &folder)
     << "subsection time stepping\n set end time = " << c.end_time
     << "\n set initial time step = " << c.time_step
     << "\n set maximum time step = " << c.time_step << "\n set adaptive = false\n"
-    << " set bdf order = " << c.bdf_order << "\n set outer iterations = 4\nend\n"
+    << " set bdf order = " << c.bdf_order
+    << "\n set outer iterations = 4\n set outer tolerance = 0\nend\n"
     << "subsection linear solver\n set scalar tolerance = 1e-13\nend\n"
     << "subsection output\n set folder = " << folder
     << "\n set field interval = 0\n set progress interval = 100000\nend\n"

@@ -202,10 +202,44 @@ void TimeSteppingParameters::declare_parameters (ParameterHandler &prm)
   prm.declare_entry ("growth factor", "1.2", Double (), "Largest growth of the step.");
   prm.declare_entry (
       "bdf order", "2", Integer (1, 2), "1: backward Euler, 2: variable BDF2.");
-  prm.declare_entry ("outer iterations",
-                     "2",
-                     Integer (1, 50),
-                     "Transport/momentum iterations per time step.");
+  prm.declare_entry (
+      "outer iterations",
+      "2",
+      Integer (1, 50),
+      "The most transport/momentum (outer) iterations per time step. With `outer "
+      "tolerance` = 0 every step makes exactly this many, each flow solve to `linear "
+      "solver/relative tolerance`. The change of alpha_s between iterates is tested "
+      "only with 3 or more.");
+  prm.declare_entry (
+      "outer tolerance",
+      "0.1",
+      Double (0, 1),
+      "An outer iteration after the first stops the step before its flow solve when "
+      "the flow system re-assembled at the latest iterate (alpha_s, Theta, velocities) "
+      "has a residual |b - A x| below this fraction of the residual of x^n in the "
+      "step's first system (or within 10x `linear solver/relative tolerance` of |b|), "
+      "and alpha_s changed by at most `outer alpha tolerance` in the last iteration "
+      "(doc/theory.md \"Outer iterations\"). A step that reaches `outer iterations` "
+      "unconverged is accepted and counted. 0: a fixed number of outer iterations.");
+  prm.declare_entry ("outer alpha tolerance",
+                     "1e-3",
+                     Double (0, 1),
+                     "With `outer tolerance` > 0: the largest change of alpha_s at a "
+                     "node between the last two outer iterates of a converged step "
+                     "(tested from the third outer iteration on).");
+  prm.declare_entry (
+      "outer forcing",
+      "0.1",
+      Double (1e-12, 1),
+      "With `outer tolerance` > 0: each flow solve of an outer iteration stops at "
+      "this fraction of the smaller of its initial residual and what the outer test "
+      "accepts (an Eisenstat-Walker forcing term), never below `linear "
+      "solver/relative tolerance` x |b|.");
+  prm.declare_entry ("extrapolate initial guess",
+                     "true",
+                     Bool (),
+                     "With `outer tolerance` > 0: the first flow solve of a step starts "
+                     "from the flow extrapolated linearly from the last two steps.");
   prm.declare_entry ("adaptive", "true", Bool (), "Adapt the step to the CFL target.");
   prm.leave_subsection ();
 }
@@ -213,16 +247,20 @@ void TimeSteppingParameters::declare_parameters (ParameterHandler &prm)
 void TimeSteppingParameters::parse_parameters (ParameterHandler &prm)
 {
   prm.enter_subsection ("time stepping");
-  end_time          = prm.get_double ("end time");
-  initial_time_step = prm.get_double ("initial time step");
-  maximum_time_step = prm.get_double ("maximum time step");
-  minimum_time_step = prm.get_double ("minimum time step");
-  cfl_target        = prm.get_double ("cfl target");
-  transport_cfl     = prm.get_double ("transport cfl");
-  growth_factor     = prm.get_double ("growth factor");
-  bdf_order         = prm.get_integer ("bdf order");
-  outer_iterations  = prm.get_integer ("outer iterations");
-  adaptive          = prm.get_bool ("adaptive");
+  end_time              = prm.get_double ("end time");
+  initial_time_step     = prm.get_double ("initial time step");
+  maximum_time_step     = prm.get_double ("maximum time step");
+  minimum_time_step     = prm.get_double ("minimum time step");
+  cfl_target            = prm.get_double ("cfl target");
+  transport_cfl         = prm.get_double ("transport cfl");
+  growth_factor         = prm.get_double ("growth factor");
+  bdf_order             = prm.get_integer ("bdf order");
+  outer_iterations      = prm.get_integer ("outer iterations");
+  outer_tolerance       = prm.get_double ("outer tolerance");
+  outer_alpha_tolerance = prm.get_double ("outer alpha tolerance");
+  outer_forcing         = prm.get_double ("outer forcing");
+  extrapolate_guess     = prm.get_bool ("extrapolate initial guess");
+  adaptive              = prm.get_bool ("adaptive");
   prm.leave_subsection ();
   require_positive (end_time, "time stepping/end time");
   require_positive (initial_time_step, "time stepping/initial time step");

@@ -50,18 +50,24 @@ namespace
  * being continued. */
 bool resume_may_change (const std::string &name)
 {
-  static const std::vector<std::string> names       = {"time stepping/end time",
-                                                       "time stepping/maximum time step",
-                                                       "time stepping/minimum time step",
-                                                       "time stepping/cfl target",
-                                                       "time stepping/growth factor",
-                                                       "output/folder",
-                                                       "output/field format",
-                                                       "output/field interval",
-                                                       "output/monitor interval",
-                                                       "output/overwrite",
-                                                       "output/progress interval",
-                                                       "mesh/wall face weight"};
+  static const std::vector<std::string> names = {
+      "time stepping/end time",
+      "time stepping/maximum time step",
+      "time stepping/minimum time step",
+      "time stepping/cfl target",
+      "time stepping/growth factor",
+      "time stepping/outer iterations",
+      "time stepping/outer tolerance",
+      "time stepping/outer alpha tolerance",
+      "time stepping/outer forcing",
+      "time stepping/extrapolate initial guess",
+      "output/folder",
+      "output/field format",
+      "output/field interval",
+      "output/monitor interval",
+      "output/overwrite",
+      "output/progress interval",
+      "mesh/wall face weight"};
   static const std::vector<std::string> subsections = {
       "checkpoint/", "linear solver/", "spectrum/", "divergence checks/"};
   if (std::find (names.begin (), names.end (), name) != names.end ())
@@ -162,13 +168,14 @@ void check_identity (const CheckpointState &state,
     if (it == saved.end () && declared != parameters.defaults.end () &&
         declared->second == value)
       continue;
-    require (it != saved.end () && it->second == value,
-             "checkpoint/resume",
-             name + " = '" + value + "', the checkpoint's run had '" +
-                 (it == saved.end () ? std::string ("no such parameter") : it->second) +
-                 "' (on resume only the end time, time-step limits, output, "
-                 "checkpoint, linear solver, spectrum and divergence check settings "
-                 "may change)");
+    require (
+        it != saved.end () && it->second == value,
+        "checkpoint/resume",
+        name + " = '" + value + "', the checkpoint's run had '" +
+            (it == saved.end () ? std::string ("no such parameter") : it->second) +
+            "' (on resume only the end time, time-step limits, outer iterations, output, "
+            "checkpoint, linear solver, spectrum and divergence check settings "
+            "may change)");
   }
   // monitors.csv and the bubble files: resume cuts them back, so each must still begin
   // with what the checkpoint's run had written

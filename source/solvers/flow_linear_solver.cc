@@ -9,6 +9,50 @@ namespace wetbed
 {
 using namespace dealii;
 
+namespace
+{
+/** Caps a solve at `cap_rate` iterations per decade of the reduction it must achieve
+ * (known at its first check: the initial residual) plus 10; cap_rate 0: no cap. */
+class RateCappedControl : public InterruptibleSolverControl
+{
+public:
+  RateCappedControl (MPI_Comm           communicator,
+                     const unsigned int maximum_steps,
+                     const double       tolerance,
+                     const double       cap_rate)
+      : InterruptibleSolverControl (communicator, maximum_steps, tolerance),
+        cap_rate (cap_rate)
+  {
+  }
+
+  State check (const unsigned int step, const double value) override
+  {
+    if (step == 0 && cap_rate > 0 && value > tolerance ())
+    {
+      const double decades = std::log10 (value / tolerance ());
+      set_max_steps (std::min<unsigned int> (
+          max_steps (), static_cast<unsigned int> (std::ceil (cap_rate * decades)) + 10));
+    }
+    return InterruptibleSolverControl::check (step, value);
+  }
+
+private:
+  double cap_rate;
+};
+
+/** Iterations per decade of residual reduction of a finished solve (0 if it made none).
+ */
+double iterations_per_decade (const SolverControl &control)
+{
+  const auto &residuals = control.get_history_data ();
+  if (control.last_step () == 0 || residuals.empty () || residuals.front () <= 0 ||
+      control.last_value () <= 0)
+    return 0.0;
+  const double decades = std::log10 (residuals.front () / control.last_value ());
+  return control.last_step () / std::max (decades, 0.1);
+}
+} // namespace
+
 FlowLinearSolver::FlowLinearSolver (const LinearSolverParameters &parameters,
                                     ConditionalOStream           &pcout,
                                     TimerOutput                  &timer)
@@ -28,6 +72,7 @@ FlowLinearSolver::solve (const FlowOperator           &op,
                          FlowPreconditioner           &preconditioner,
                          const BlockVector            &rhs,
                          BlockVector                  &solution,
+                         const double                  relative_target,
                          const double                  dt,
                          SolveHistory                 &history,
                          const std::function<void ()> &before_unforeseen_rebuild)
@@ -36,9 +81,9 @@ FlowLinearSolver::solve (const FlowOperator           &op,
   auto        rebuild_velocity = [&] ()
   {
     preconditioner.update (preconditioner_source, true);
-    solves_since_build     = 0;
-    iterations_after_build = 0;
-    dt_at_build            = dt;
+    solves_since_build = 0;
+    rate_after_build   = 0;
+    dt_at_build        = dt;
   };
   {
     TimerOutput::Scope scope (timer, "preconditioner setup");
@@ -48,19 +93,18 @@ FlowLinearSolver::solve (const FlowOperator           &op,
       preconditioner.update (preconditioner_source, false);
   }
 
-  const double      target        = ls.relative_tolerance * rhs.l2_norm ();
+  const double      target        = relative_target * rhs.l2_norm ();
   const BlockVector initial_guess = solution;
   unsigned int      spent         = 0;
   for (unsigned int attempt = 0; attempt < 2; ++attempt)
   {
     const bool         reused = solves_since_build > 0;
-    const unsigned int limit =
-        reused ? std::min (ls.maximum_iterations, 3 * iterations_after_build + 10)
-               : ls.maximum_iterations;
     TimerOutput::Scope scope (timer, "Krylov solve");
     solution = initial_guess;
-    InterruptibleSolverControl control (
-        rhs.block (0).get_mpi_communicator (), limit, std::max (target, 1e-300));
+    RateCappedControl control (rhs.block (0).get_mpi_communicator (),
+                               ls.maximum_iterations,
+                               std::max (target, 1e-300),
+                               reused ? 3 * rate_after_build : 0.0); // 0: no cap
     control.enable_history_data ();
     SolverFGMRES<BlockVector> fgmres (
         control, typename SolverFGMRES<BlockVector>::AdditionalData (ls.restart));
@@ -109,9 +153,10 @@ FlowLinearSolver::solve (const FlowOperator           &op,
         pcout << "      " << inner << std::endl;
     }
     ++solves_since_build;
-    if (iterations_after_build == 0)
-      iterations_after_build = std::max (1u, iterations);
-    else if (iterations > ls.rebuild_growth * iterations_after_build)
+    const double rate = iterations_per_decade (control);
+    if (rate_after_build == 0) // the first solve after the build (that iterated)
+      rate_after_build = rate;
+    else if (rate > ls.rebuild_growth * rate_after_build)
       solves_since_build = ls.rebuild_interval;
     return iterations + spent;
   }

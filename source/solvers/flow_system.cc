@@ -260,8 +260,22 @@ void FlowSystem<dim>::check_operator (const FlowAssemblyState<dim>    &state,
 }
 
 template <int dim>
+double FlowSystem<dim>::relative_residual (
+    const BlockVector &solution, const AffineConstraints<double> &flow_constraints) const
+{
+  BlockVector x (owned, communicator);
+  x = solution;
+  flow_constraints.set_zero (x); // the solve's unknowns: the constraints are lifted
+  BlockVector residual (owned, communicator);
+  krylov_operator ().vmult (residual, x);
+  residual.sadd (-1.0, 1.0, rhs);
+  return residual.l2_norm () / std::max (rhs.l2_norm (), 1e-300);
+}
+
+template <int dim>
 unsigned int FlowSystem<dim>::solve (BlockVector                     &solution,
                                      const AffineConstraints<double> &flow_constraints,
+                                     const double                     relative_target,
                                      const double                     dt,
                                      SolveHistory                    &history)
 {
@@ -284,6 +298,7 @@ unsigned int FlowSystem<dim>::solve (BlockVector                     &solution,
                                                              *multigrid_preconditioner,
                                                              rhs,
                                                              owned_solution,
+                                                             relative_target,
                                                              dt,
                                                              history,
                                                              with_coarse_matrix)
@@ -292,6 +307,7 @@ unsigned int FlowSystem<dim>::solve (BlockVector                     &solution,
                                                              *preconditioner,
                                                              rhs,
                                                              owned_solution,
+                                                             relative_target,
                                                              dt,
                                                              history);
   if (iterations == numbers::invalid_unsigned_int)

@@ -492,15 +492,48 @@ bool TwoFluidSolver<dim>::try_time_step (const double dt, const unsigned int bdf
                                            dt};
     return granular_energy.update (inputs, theta, solve_history, rejection_reason);
   };
-  for (unsigned int k = 0; k < parameters.time.outer_iterations; ++k)
+  // doc/theory.md "Outer iterations": with an outer tolerance, each iteration after the
+  // first tests the flow system re-assembled at the latest iterate before solving it,
+  // and each flow solve is inexact (a forcing term of that tolerance)
+  const auto &ts       = parameters.time;
+  const bool  adaptive = ts.outer_tolerance > 0 && !manufactured;
+  AlphaVector alpha_iterate; // alpha_s before the last transport (from k = 1)
+  double      alpha_change  = std::numeric_limits<double>::max ();
+  double      step_residual = 0; // |b - A x^n| / |b| at the first iteration
+  last_outer_converged      = !adaptive;
+  last_outer_iterations     = 0;
+  for (unsigned int k = 0; k < ts.outer_iterations; ++k)
   {
     abandon_step_on_stop (communicator);
     solve_history.set_outer_iteration (k);
     // 1. closures at quadrature points + monolithic (u_g, u_s, p') solve with
     //    P_s(alpha_m) explicit, alpha_m the latest alpha_s (alpha_s^n at k = 0)
     assemble_flow_system (bdf, dt);
+    const double floor  = parameters.linear_solver.relative_tolerance;
+    double       target = floor;
+    if (adaptive)
+    {
+      TimerOutput::Scope scope (timer, "outer residual");
+      const double       residual =
+          flow_system.relative_residual (flow_solution, flow_constraints);
+      if (k == 0)
+        step_residual = residual; // how far x^n is from solving the new step
+      else if ((residual <= ts.outer_tolerance * step_residual ||
+                residual <= 10 * floor) &&
+               (k == 1 || alpha_change <= ts.outer_alpha_tolerance))
+      {
+        last_outer_converged = true;
+        break;
+      }
+      target = std::max (floor,
+                         ts.outer_forcing *
+                             std::min (residual, ts.outer_tolerance * step_residual));
+      if (k == 0 && ts.extrapolate_guess && step_number > 0 && previous_time_step > 0)
+        extrapolate_flow (dt / previous_time_step);
+    }
+    ++last_outer_iterations;
     const unsigned int iterations =
-        flow_system.solve (flow_solution, flow_constraints, dt, solve_history);
+        flow_system.solve (flow_solution, flow_constraints, target, dt, solve_history);
     if (iterations == numbers::invalid_unsigned_int)
     {
       rejection_reason = "FGMRES did not converge";
@@ -518,6 +551,8 @@ bool TwoFluidSolver<dim>::try_time_step (const double dt, const unsigned int bdf
       }
       continue;
     }
+    if (adaptive && k > 0 && k + 1 < ts.outer_iterations)
+      alpha_iterate = alpha;
     // 2.-3. alpha_s transport and compaction correction (held solids: alpha_s stays)
     if (!parameters.boundary.hold_solids && !solids_transport.advance ({mapping,
                                                                         flow_fe,
@@ -537,6 +572,14 @@ bool TwoFluidSolver<dim>::try_time_step (const double dt, const unsigned int bdf
                                                                        solve_history,
                                                                        rejection_reason))
       return false;
+    if (adaptive && k > 0 && k + 1 < ts.outer_iterations)
+    {
+      double change = 0;
+      for (unsigned int i = 0; i < alpha.locally_owned_size (); ++i)
+        change = std::max (
+            change, std::abs (alpha.local_element (i) - alpha_iterate.local_element (i)));
+      alpha_change = Utilities::MPI::max (change, communicator);
+    }
     // 4. granular temperature with the new alpha_s and u_s (PDE or local equilibrium);
     //    it also evolves in a held solids velocity field
     if (kinetic_theory && !update_granular_temperature ())
@@ -569,6 +612,18 @@ bool TwoFluidSolver<dim>::try_time_step (const double dt, const unsigned int bdf
     return false;
   }
   return true;
+}
+
+template <int dim>
+void TwoFluidSolver<dim>::extrapolate_flow (const double ratio)
+{
+  // x^n + ratio (x^n - x^{n-1}): the linear extrapolation to t_{n+1}; constrained
+  // entries are reset by the solve
+  BlockVector guess (flow_owned, communicator), older (flow_owned, communicator);
+  guess = flow_old;
+  older = flow_old2;
+  guess.sadd (1.0 + ratio, -ratio, older);
+  flow_solution = guess;
 }
 
 template <int dim>
@@ -660,6 +715,9 @@ void TwoFluidSolver<dim>::advance ()
     restore ();
   }
   divergence_checks.accept (checked.kinetic_energy);
+  outer_iterations_run += last_outer_iterations;
+  if (!last_outer_converged)
+    ++unconverged_steps;
   // shift history
   flow_old2  = flow_old;
   flow_old   = flow_solution;
@@ -796,11 +854,11 @@ typename TwoFluidSolver<dim>::RunEnd TwoFluidSolver<dim>::run ()
       const auto  &row = monitors.last ();
       pcout << "step " << std::setw (6) << step_number << "  t = " << std::setw (9)
             << std::setprecision (5) << time << " s  dt = " << std::setw (9)
-            << row.time_step << "  Krylov " << std::setw (3) << row.krylov << "  FI "
-            << std::setw (7) << row.fluidization << "  alpha_s [" << row.alpha_min << ", "
-            << row.alpha_max << "]  mass drift " << std::setprecision (2)
-            << row.mass_drift << "  wall " << std::setprecision (4) << elapsed
-            << " s  ETA " << eta << " s" << std::endl;
+            << row.time_step << "  outer " << last_outer_iterations << "  Krylov "
+            << std::setw (3) << row.krylov << "  FI " << std::setw (7) << row.fluidization
+            << "  alpha_s [" << row.alpha_min << ", " << row.alpha_max << "]  mass drift "
+            << std::setprecision (2) << row.mass_drift << "  wall "
+            << std::setprecision (4) << elapsed << " s  ETA " << eta << " s" << std::endl;
     }
   }
   if (parameters.output.field_interval == 0)
@@ -820,6 +878,14 @@ typename TwoFluidSolver<dim>::RunEnd TwoFluidSolver<dim>::run ()
         << " us per cell per step (" << triangulation.n_global_active_cells ()
         << " cells at the end); velocity AMG builds " << flow_system.velocity_builds ()
         << std::endl;
+  pcout << "Outer iterations: "
+        << static_cast<double> (outer_iterations_run) /
+               std::max (1u, step_number - first_step)
+        << " per step";
+  if (ts.outer_tolerance > 0 && !manufactured)
+    pcout << " (" << unconverged_steps << " steps used all " << ts.outer_iterations
+          << ", their last iterate not tested)";
+  pcout << std::endl;
   {
     dealii::Utilities::System::MemoryStats memory;
     dealii::Utilities::System::get_memory_stats (memory);

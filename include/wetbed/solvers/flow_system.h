@@ -70,11 +70,18 @@ public:
   /** Solves the last assembled system from `solution` (ghosted: the lagged iterate
    * on entry, the new one with constraints distributed on exit); the iterations, or
    * invalid_unsigned_int when the solve failed with a fresh preconditioner (then
-   * `solution` is unchanged). */
+   * `solution` is unchanged). It stops at |b - A x| <= relative_target |b|. */
   unsigned int solve (BlockVector                             &solution,
                       const dealii::AffineConstraints<double> &flow_constraints,
+                      double                                   relative_target,
                       double                                   dt,
                       SolveHistory                            &history);
+  /** |b - A x| / |b| of the last assembled system at x = `solution` (ghosted, the
+   * constraints of that assembly distributed): the outer iterations' convergence
+   * measure (doc/theory.md "Outer iterations"); one operator product; collective. */
+  double
+  relative_residual (const BlockVector                       &solution,
+                     const dealii::AffineConstraints<double> &flow_constraints) const;
 
   /** The vertical forces of the inlet, the walls and the outlet on the mixture (N, per
    * metre depth in 2D; in this order): the residuals of their velocity rows in the

@@ -148,6 +148,9 @@ private:
    * parts in order; two_fluid_solver.cc). */
   void resume_from_checkpoint ();
   bool try_time_step (double dt, unsigned int bdf_order);
+  /** flow_solution = x^n + ratio (x^n - x^{n-1}): the first flow solve's initial guess.
+   */
+  void extrapolate_flow (double ratio);
   /** The peak speeds of the current fields into `wave_speeds` (once for each new
    * state: after the initial state, each step, each mesh change). */
   void update_wave_speeds ();
@@ -277,13 +280,18 @@ private:
   InletConditions<dim> inlets;
   double               time, time_step, previous_time_step;
   unsigned int         step_number, rejected_steps, last_krylov_iterations;
-  WaveSpeeds           wave_speeds; // of the current fields (update_wave_speeds)
-  double               initial_solids_mass;
-  double               min_node_spacing;
-  bool                 initialized = false;
-  bool                 resumed     = false; // the state came from a checkpoint
-  std::string          run_id;              // new for each run, kept by its resumes
-  std::string          rejection_reason;    // why the last attempted step was rejected
-  SolveHistory         solve_history;       // the linear solves of the current step
+  // outer iterations of the last attempt, and over the accepted steps of this run: their
+  // sum and the steps that used all `outer iterations` (outer tolerance > 0; the test
+  // of the last iterate would need another assembly)
+  unsigned int last_outer_iterations = 0, outer_iterations_run = 0, unconverged_steps = 0;
+  bool         last_outer_converged = true;
+  WaveSpeeds   wave_speeds; // of the current fields (update_wave_speeds)
+  double       initial_solids_mass;
+  double       min_node_spacing;
+  bool         initialized = false;
+  bool         resumed     = false; // the state came from a checkpoint
+  std::string  run_id;              // new for each run, kept by its resumes
+  std::string  rejection_reason;    // why the last attempted step was rejected
+  SolveHistory solve_history;       // the linear solves of the current step
 };
 } // namespace wetbed
