@@ -616,7 +616,8 @@ void Parameters::collect_domain_checks ()
   checks.point_probes = bed_monitors.point_probes;
   checks.held_solids_velocity =
       boundary.hold_solids ? boundary.held_solids_velocity : std::string ();
-  checks.end_time = time.end_time;
+  checks.end_time           = time.end_time;
+  checks.assembled_operator = !linear_solver.matrix_free;
   checks.refinement_levels.emplace_back ("mesh/initial refinement",
                                          mesh.initial_refinement);
   if (adaptive_refinement.enabled)

@@ -29,6 +29,7 @@ struct DomainChecks
   double      end_time = 0;         // the time span [0, end time] of the samples
   // uniform refinement levels that every cell reaches, and the parameter that asks
   std::vector<std::pair<std::string, unsigned int>> refinement_levels;
+  bool assembled_operator = false; // linear solver/operator: the memory per cell
 };
 
 /** `subsection mesh`: the gmsh geometry and how its physical groups are used. */
