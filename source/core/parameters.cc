@@ -219,8 +219,9 @@ void TimeSteppingParameters::declare_parameters (ParameterHandler &prm)
       "has a residual |b - A x| below this fraction of the residual of x^n in the "
       "step's first system (or within 10x `linear solver/relative tolerance` of |b|), "
       "and alpha_s changed by at most `outer alpha tolerance` in the last iteration "
-      "(doc/theory.md \"Outer iterations\"). A step that reaches `outer iterations` "
-      "unconverged is accepted and counted. 0: a fixed number of outer iterations.");
+      "(doc/theory.md \"Outer iterations\"). A step that uses all `outer iterations` is "
+      "accepted without testing its last iterate, and counted. 0: a fixed number of "
+      "outer iterations.");
   prm.declare_entry ("outer alpha tolerance",
                      "1e-3",
                      Double (0, 1),
