@@ -33,6 +33,35 @@ namespace wetbed
 {
 using namespace dealii;
 
+namespace
+{
+/** The outer convergence test (doc/theory.md "Outer iterations") at iteration k >= 1:
+ * the re-assembled flow residual against the step's own change r_0 (or at the linear
+ * solver's floor), and from k = 2 on the alpha_s change of the last transport. */
+bool outer_converged (const TimeSteppingParameters &ts,
+                      const unsigned int            k,
+                      const double                  residual,
+                      const double                  step_residual,
+                      const double                  alpha_change,
+                      const double                  floor)
+{
+  return k > 0 &&
+         (residual <= ts.outer_tolerance * step_residual || residual <= 10 * floor) &&
+         (k == 1 || alpha_change <= ts.outer_alpha_tolerance);
+}
+
+/** max |a - b| over the owned entries of all ranks. */
+double largest_change (const LinearAlgebra::distributed::Vector<double> &a,
+                       const LinearAlgebra::distributed::Vector<double> &b,
+                       const MPI_Comm                                    communicator)
+{
+  double change = 0;
+  for (unsigned int i = 0; i < a.locally_owned_size (); ++i)
+    change = std::max (change, std::abs (a.local_element (i) - b.local_element (i)));
+  return Utilities::MPI::max (change, communicator);
+}
+} // namespace
+
 template <int dim>
 TwoFluidSolver<dim>::TwoFluidSolver (const Parameters &parameters, MPI_Comm communicator)
     : parameters (parameters), communicator (communicator),
@@ -518,9 +547,7 @@ bool TwoFluidSolver<dim>::try_time_step (const double dt, const unsigned int bdf
           flow_system.relative_residual (flow_solution, flow_constraints);
       if (k == 0)
         step_residual = residual; // how far x^n is from solving the new step
-      else if ((residual <= ts.outer_tolerance * step_residual ||
-                residual <= 10 * floor) &&
-               (k == 1 || alpha_change <= ts.outer_alpha_tolerance))
+      if (outer_converged (ts, k, residual, step_residual, alpha_change, floor))
       {
         last_outer_converged = true;
         break;
@@ -573,13 +600,7 @@ bool TwoFluidSolver<dim>::try_time_step (const double dt, const unsigned int bdf
                                                                        rejection_reason))
       return false;
     if (adaptive && k > 0 && k + 1 < ts.outer_iterations)
-    {
-      double change = 0;
-      for (unsigned int i = 0; i < alpha.locally_owned_size (); ++i)
-        change = std::max (
-            change, std::abs (alpha.local_element (i) - alpha_iterate.local_element (i)));
-      alpha_change = Utilities::MPI::max (change, communicator);
-    }
+      alpha_change = largest_change (alpha, alpha_iterate, communicator);
     // 4. granular temperature with the new alpha_s and u_s (PDE or local equilibrium);
     //    it also evolves in a held solids velocity field
     if (kinetic_theory && !update_granular_temperature ())
