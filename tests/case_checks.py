@@ -814,7 +814,11 @@ elif check == "divergence":
         # the Courant limit of the first step's speeds is below the smallest step allowed
         "courant": ("subsection time stepping\n set end time = 0.05\n set cfl target = 1e-3\n"
                     " set initial time step = 1e-4\n set minimum time step = 1e-4\nend\n",
-                    "the Courant limit ", "fell below time stepping/minimum time step"),
+                    "the next time step ", "fell below time stepping/minimum time step (Courant limit"),
+        # an error tolerance no step can meet halves the step until it is below the minimum
+        "time_error": ("subsection time stepping\n set end time = 0.05\n set time error tolerance = 1e-14\n"
+                       " set initial time step = 1e-4\n set minimum time step = 6e-5\nend\n",
+                       "the next time step ", "alpha_s time error"),
     }
     for name, (overrides, cause, detail) in injected.items():
         folder = os.path.join(work, "divergence_" + name)

@@ -195,6 +195,23 @@ void TimeSteppingParameters::declare_parameters (ParameterHandler &prm)
       "0.5",
       Double (),
       "Target Courant number of the phase velocities per Q2 node spacing.");
+  prm.declare_entry (
+      "courant measure",
+      "local",
+      Selection ("local|global"),
+      "local: the Courant number of each cell, its speeds on its own Q2 node spacing, "
+      "the gas speed counted only in cells that hold solids (doc/theory.md \"Time "
+      "step\"); global: the peak speeds of the whole mesh on its smallest node "
+      "spacing.");
+  prm.declare_entry (
+      "time error tolerance",
+      "0",
+      Double (0),
+      "The step is also limited so that the local time-error estimate of alpha_s "
+      "(the RMS over the nodes holding solids of the difference between the step's "
+      "alpha_s and its linear extrapolation from the last two steps, scaled to the "
+      "error of a first-order step) stays at this value. 0: no error control, the "
+      "Courant limit alone.");
   prm.declare_entry ("transport cfl",
                      "0.4",
                      Double (),
@@ -253,6 +270,8 @@ void TimeSteppingParameters::parse_parameters (ParameterHandler &prm)
   maximum_time_step     = prm.get_double ("maximum time step");
   minimum_time_step     = prm.get_double ("minimum time step");
   cfl_target            = prm.get_double ("cfl target");
+  local_courant         = prm.get ("courant measure") == "local";
+  time_error_tolerance  = prm.get_double ("time error tolerance");
   transport_cfl         = prm.get_double ("transport cfl");
   growth_factor         = prm.get_double ("growth factor");
   bdf_order             = prm.get_integer ("bdf order");

@@ -85,6 +85,7 @@ MonitorRow evaluate_monitors (const SolverState<dim> &s)
   row.gas_speed_max        = speeds.gas;
   row.solids_speed_max     = speeds.solids;
   row.granular_sound_speed = speeds.granular_sound;
+  row.time_error           = s.time_error;
 
   // bed height: 95% of the solids lie below it (nodal masses sorted by height)
   const Tensor<1, dim>                   up = upward_direction<dim> (pp.gravity);

@@ -14,15 +14,16 @@ namespace
 std::string header (const MonitorColumns &columns)
 {
   std::ostringstream file;
-  file << "step,time,time_step,inlet_superficial_velocity,krylov_iterations,rejected_"
-          "steps,pressure_drop,"
-          "fluidization_index,solids_mass,solids_mass_drift,alpha_s_min,alpha_s_max,"
-          "gas_speed_max,solids_speed_max,bed_height,theta_min,theta_mean,theta_max,"
-          "granular_production,granular_dissipation,granular_drag_exchange,"
-          "granular_wall_flux,active_cells,bed_surface_height,expansion_ratio,"
-          "wall_support_solids,wall_support_gas,distributor_support,outlet_support,"
-          "mixture_momentum,continuity_defect,momentum_outflow,correction_force,"
-          "inlet_reaction,wall_reaction,outlet_reaction,gas_inflow,gas_outflow";
+  file
+      << "step,time,time_step,inlet_superficial_velocity,krylov_iterations,rejected_"
+         "steps,pressure_drop,"
+         "fluidization_index,solids_mass,solids_mass_drift,alpha_s_min,alpha_s_max,"
+         "gas_speed_max,solids_speed_max,bed_height,theta_min,theta_mean,theta_max,"
+         "granular_production,granular_dissipation,granular_drag_exchange,"
+         "granular_wall_flux,active_cells,bed_surface_height,expansion_ratio,"
+         "wall_support_solids,wall_support_gas,distributor_support,outlet_support,"
+         "mixture_momentum,continuity_defect,momentum_outflow,correction_force,"
+         "inlet_reaction,wall_reaction,outlet_reaction,gas_inflow,gas_outflow,time_error";
   for (const double h : columns.probe_heights)
     file << ",alpha_s_plane_" << h;
   if (columns.pressure_drop_planes.size () == 2)
@@ -137,7 +138,7 @@ void Monitors::add (const MonitorRow &r)
        << r.outlet_support << ',' << r.mixture_momentum << ',' << r.continuity_defect
        << ',' << r.momentum_outflow << ',' << r.correction_force << ','
        << r.inlet_reaction << ',' << r.wall_reaction << ',' << r.outlet_reaction << ','
-       << r.gas_inflow << ',' << r.gas_outflow;
+       << r.gas_inflow << ',' << r.gas_outflow << ',' << r.time_error;
   for (const double a : r.plane_alpha)
     file << ',' << a;
   for (const double dp : r.plane_pressure_drop)

@@ -55,6 +55,8 @@ bool resume_may_change (const std::string &name)
       "time stepping/maximum time step",
       "time stepping/minimum time step",
       "time stepping/cfl target",
+      "time stepping/courant measure",
+      "time stepping/time error tolerance",
       "time stepping/growth factor",
       "time stepping/outer iterations",
       "time stepping/outer tolerance",

@@ -50,6 +50,7 @@ SolverState<dim> TwoFluidSolver<dim>::state () const
                           solids_transport.correction_momentum (),
                           granular_energy.budget (),
                           wave_speeds,
+                          time_error,
                           time_averages.get ()};
 }
 

@@ -1,18 +1,33 @@
 #include <wetbed/solvers/time_step_controller.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace wetbed
 {
+double TimeStepController::courant_limit (const WaveSpeeds &speeds,
+                                          const double      node_spacing) const
+{
+  if (parameters.local_courant)
+    return parameters.cfl_target / std::max (speeds.courant_rate, 1e-12);
+  const double speed =
+      std::max ({speeds.solids, 0.25 * speeds.gas, speeds.granular_sound, 1e-12});
+  return parameters.cfl_target * node_spacing / speed;
+}
+
 double TimeStepController::next (const double      dt,
                                  const WaveSpeeds &speeds,
-                                 const double      node_spacing) const
+                                 const double      node_spacing,
+                                 const double      time_error) const
 {
   if (!parameters.adaptive)
     return dt;
-  const double speed =
-      std::max ({speeds.solids, 0.25 * speeds.gas, speeds.granular_sound, 1e-12});
-  const double cfl_dt = parameters.cfl_target * node_spacing / speed;
-  return std::min ({parameters.maximum_time_step, parameters.growth_factor * dt, cfl_dt});
+  double       next      = std::min ({parameters.maximum_time_step,
+                                      parameters.growth_factor * dt,
+                                      courant_limit (speeds, node_spacing)});
+  const double tolerance = parameters.time_error_tolerance;
+  if (tolerance > 0 && time_error > 0)
+    next = std::min (next, dt * std::max (0.5, 0.9 * std::sqrt (tolerance / time_error)));
+  return next;
 }
 } // namespace wetbed

@@ -1,8 +1,10 @@
+#include <wetbed/assembly/flow/flow_terms.h>
 #include <wetbed/core/expression_constants.h>
 #include <wetbed/core/input_error.h>
 #include <wetbed/core/stall_watchdog.h>
 #include <wetbed/core/stop_signal.h>
 #include <wetbed/postprocess/bed_monitors.h>
+#include <wetbed/solvers/time_error.h>
 #include <wetbed/solvers/two_fluid_solver.h>
 #include <wetbed/solvers/wave_speeds.h>
 
@@ -452,7 +454,7 @@ template <int dim>
 std::vector<std::pair<double, double>>
 TwoFluidSolver<dim>::hydrostatic_profile (const std::vector<double> &heights) const
 {
-  // The discrete rest state of the well-balanced compaction force (momentum_pressure.cc):
+  // The discrete rest state of the well-balanced compaction force (doc/theory.md):
   // from the top down, cell by cell between consecutive vertex heights,
   //   P_s(alpha_k) - P_s(alpha_above) = (z_above - z_k) (rho_s - rho_g)|g|
   //                                      (alpha_k + alpha_above) / 2,
@@ -647,6 +649,36 @@ void TwoFluidSolver<dim>::extrapolate_flow (const double ratio)
   flow_solution = guess;
 }
 
+/**
+ * The Oseen-linearised two-fluid system at t_{n+1} about the latest iterate
+ * (doc/theory.md, "Discrete flow system"), by the flow terms of this case.
+ */
+template <int dim>
+void TwoFluidSolver<dim>::assemble_flow_system (const BDFCoefficients &bdf,
+                                                const double           dt)
+{
+  if (!flow_system.has_assembler ())
+    flow_system.set_assembler (make_flow_assembler<dim> (parameters,
+                                                         mapping,
+                                                         flow_dof_handler,
+                                                         alpha_dof_handler,
+                                                         closure_evaluator,
+                                                         boundaries,
+                                                         wall_conditions,
+                                                         moving_wall_velocity (),
+                                                         manufactured));
+  const FlowAssemblyState<dim> state{bdf,
+                                     dt,
+                                     &flow_solution,
+                                     &flow_old,
+                                     &flow_old2,
+                                     &alpha,
+                                     &alpha_old,
+                                     &alpha_old2,
+                                     &theta};
+  flow_system.assemble (state, flow_constraints, schur_constraints);
+}
+
 template <int dim>
 void TwoFluidSolver<dim>::update_wave_speeds ()
 {
@@ -658,7 +690,7 @@ double TwoFluidSolver<dim>::next_time_step (const double dt) const
 {
   if (!parameters.time.adaptive)
     return dt;
-  return time_step_controller.next (dt, wave_speeds, min_node_spacing);
+  return time_step_controller.next (dt, wave_speeds, min_node_spacing, time_error);
 }
 
 template <int dim>
@@ -739,6 +771,14 @@ void TwoFluidSolver<dim>::advance ()
   outer_iterations_run += last_outer_iterations;
   if (!last_outer_converged)
     ++unconverged_steps;
+  time_error = step_number > 0 ? alpha_time_error (alpha,
+                                                   alpha_old,
+                                                   alpha_old2,
+                                                   solids_transport.lumped_mass (),
+                                                   dt,
+                                                   previous_time_step,
+                                                   communicator)
+                               : 0.0;
   // shift history
   flow_old2  = flow_old;
   flow_old   = flow_solution;
@@ -756,13 +796,15 @@ void TwoFluidSolver<dim>::advance ()
   time_step = next_time_step (dt);
   if (!last_step && time_step < ts.minimum_time_step)
   {
-    // the speeds grew until the Courant limit is below the smallest step allowed: the
-    // accepted state is the last good one
+    // the speeds (or the time error) grew until the next step is below the smallest
+    // allowed: the accepted state is the last good one
     std::ostringstream reason;
-    reason << "the Courant limit " << time_step
-           << " s fell below time stepping/minimum time step (peak speeds: gas "
-           << wave_speeds.gas << " m/s, solids " << wave_speeds.solids
-           << " m/s, granular sound " << wave_speeds.granular_sound << " m/s)";
+    reason << "the next time step " << time_step
+           << " s fell below time stepping/minimum time step (Courant limit "
+           << time_step_controller.courant_limit (wave_speeds, min_node_spacing)
+           << " s; peak speeds: gas " << wave_speeds.gas << " m/s, solids "
+           << wave_speeds.solids << " m/s, granular sound " << wave_speeds.granular_sound
+           << " m/s; alpha_s time error " << time_error << ")";
     rejection_reason = reason.str ();
     stop_diverged (reason.str (), "", time_step, [] () {});
   }

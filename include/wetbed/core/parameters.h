@@ -86,12 +86,14 @@ struct InitialConditionParameters
 struct TimeSteppingParameters
 {
   double       end_time, initial_time_step, maximum_time_step, minimum_time_step;
-  double       cfl_target;       // on the mixture velocity per Q2 node spacing
-  double       transport_cfl;    // per explicit alpha sub-step
-  double       growth_factor;    // largest step-to-step growth
-  unsigned int bdf_order;        // 1 or 2
-  unsigned int outer_iterations; // the most per step
-  double       outer_tolerance;  // converged: relative flow residual (0: fixed count)
+  double       cfl_target;           // on the phase velocities per Q2 node spacing
+  bool         local_courant;        // each cell's speeds on its own node spacing
+  double       time_error_tolerance; // of the alpha_s local error estimate (0: off)
+  double       transport_cfl;        // per explicit alpha sub-step
+  double       growth_factor;        // largest step-to-step growth
+  unsigned int bdf_order;            // 1 or 2
+  unsigned int outer_iterations;     // the most per step
+  double       outer_tolerance;      // converged: relative flow residual (0: fixed count)
   double       outer_alpha_tolerance; // and max |alpha_s change| between iterates
   double       outer_forcing;     // linear solves to this fraction of the outer tolerance
   bool         extrapolate_guess; // first solve from the extrapolated flow iterate

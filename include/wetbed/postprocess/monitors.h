@@ -55,6 +55,7 @@ struct MonitorRow
   double alpha_max        = 0;
   double gas_speed_max    = 0;
   double solids_speed_max = 0;
+  double time_error       = 0; // alpha_s's local time-error estimate of the step
   double bed_height       = 0; // height below which 95% of the solids lie
   double theta_min = 0, theta_mean = 0, theta_max = 0; // Theta (mean: solids-weighted)
   double granular_sound_speed = 0; // max sqrt(2 P_kin/(alpha_s rho_s)) (m/s)

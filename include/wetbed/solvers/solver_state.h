@@ -73,6 +73,9 @@ struct SolverState
   // the peak speeds of these fields (evaluate_wave_speeds), evaluated once for each new
   // state: the time-step controller and monitors.csv read the same
   WaveSpeeds wave_speeds;
+  // alpha_s's local time-error estimate of the last step (alpha_time_error; 0 before the
+  // second step of a run or resume)
+  double time_error;
   // the time averages (subsection statistics); null when they are off
   TimeAverages<dim> *time_averages;
 

@@ -154,7 +154,8 @@ private:
   /** The peak speeds of the current fields into `wave_speeds` (once for each new
    * state: after the initial state, each step, each mesh change). */
   void update_wave_speeds ();
-  /** The next step after one of length dt (TimeStepController, on `wave_speeds`). */
+  /** The next step after one of length dt (TimeStepController, on `wave_speeds` and
+   * `time_error`). */
   double next_time_step (double dt) const;
   /** A read-only view of the current state, for the postprocessors and the time-step
    * controller (source/solvers/postprocessing.cc). */
@@ -162,10 +163,8 @@ private:
   /** Adds a monitors.csv row of the current state (every `monitor interval` steps). */
   void record_monitors ();
 
-  // assembly (source/assembly/)
-  /** The flow terms of this case, once the mesh's boundaries are known. */
-  std::unique_ptr<FlowAssembler<dim>> make_flow_assembler () const;
-  /** The flow system linearised about the current iterate (FlowSystem::assemble). */
+  /** The flow system linearised about the current iterate (FlowSystem::assemble; its
+   * assembler from make_flow_assembler on first use). */
   void assemble_flow_system (const BDFCoefficients &bdf, double dt);
 
   // postprocessing: the components in source/postprocess/ read state(); their
@@ -285,7 +284,8 @@ private:
   // of the last iterate would need another assembly)
   unsigned int last_outer_iterations = 0, outer_iterations_run = 0, unconverged_steps = 0;
   bool         last_outer_converged = true;
-  WaveSpeeds   wave_speeds; // of the current fields (update_wave_speeds)
+  WaveSpeeds   wave_speeds;    // of the current fields (update_wave_speeds)
+  double       time_error = 0; // alpha_s's local error estimate of the last step
   double       initial_solids_mass;
   double       min_node_spacing;
   bool         initialized = false;

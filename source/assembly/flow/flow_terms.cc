@@ -3,6 +3,7 @@
 #include <wetbed/assembly/flow/drag_coupling_term.h>
 #include <wetbed/assembly/flow/flow_terms.h>
 #include <wetbed/assembly/flow/inertia_term.h>
+#include <wetbed/assembly/flow/manufactured_source_term.h>
 #include <wetbed/assembly/flow/nitsche_wall_term.h>
 #include <wetbed/assembly/flow/outlet_backflow_term.h>
 #include <wetbed/assembly/flow/pressure_coupling_term.h>
@@ -58,6 +59,65 @@ void add_flow_terms (FlowAssembler<dim> &assembler, const FlowTermContext<dim> &
         id.ids (BoundaryType::outlet), m.gas_density));
 }
 
+template <int dim>
+std::unique_ptr<FlowAssembler<dim>>
+make_flow_assembler (const Parameters                 &parameters,
+                     const dealii::Mapping<dim>       &mapping,
+                     const dealii::DoFHandler<dim>    &flow_dof_handler,
+                     const dealii::DoFHandler<dim>    &alpha_dof_handler,
+                     const closures::ClosureEvaluator &closures,
+                     const Boundaries                 &boundaries,
+                     const WallConditions             &walls,
+                     const dealii::Tensor<1, dim>     &moving_wall_velocity,
+                     std::shared_ptr<const ManufacturedSolution<dim>> manufactured)
+{
+  const auto       &pp = parameters.physical;
+  FlowMaterial<dim> material{pp.gas_density,
+                             pp.particle_density,
+                             pp.gas_viscosity,
+                             pp.residual_solids_fraction,
+                             {}};
+  for (unsigned int d = 0; d < dim; ++d)
+    material.gravity[d] = pp.gravity[d];
+  auto assembler = std::make_unique<FlowAssembler<dim>> (
+      mapping, flow_dof_handler, alpha_dof_handler, closures, material);
+  const FlowTermContext<dim> context{&parameters,
+                                     boundaries,
+                                     walls,
+                                     &closures,
+                                     material,
+                                     moving_wall_velocity,
+                                     flow_dof_handler.get_fe ().degree,
+                                     !manufactured || manufactured->slip_walls ()};
+  add_flow_terms (*assembler, context);
+  if (manufactured)
+    assembler->add_term (std::make_unique<ManufacturedSourceTerm<dim>> (
+        manufactured,
+        boundaries.ids (BoundaryType::outlet),
+        boundaries.ids (BoundaryType::wall)));
+  return assembler;
+}
+
 template void add_flow_terms (FlowAssembler<2> &, const FlowTermContext<2> &);
 template void add_flow_terms (FlowAssembler<3> &, const FlowTermContext<3> &);
+template std::unique_ptr<FlowAssembler<2>>
+make_flow_assembler (const Parameters &,
+                     const dealii::Mapping<2> &,
+                     const dealii::DoFHandler<2> &,
+                     const dealii::DoFHandler<2> &,
+                     const closures::ClosureEvaluator &,
+                     const Boundaries &,
+                     const WallConditions &,
+                     const dealii::Tensor<1, 2> &,
+                     std::shared_ptr<const ManufacturedSolution<2>>);
+template std::unique_ptr<FlowAssembler<3>>
+make_flow_assembler (const Parameters &,
+                     const dealii::Mapping<3> &,
+                     const dealii::DoFHandler<3> &,
+                     const dealii::DoFHandler<3> &,
+                     const closures::ClosureEvaluator &,
+                     const Boundaries &,
+                     const WallConditions &,
+                     const dealii::Tensor<1, 3> &,
+                     std::shared_ptr<const ManufacturedSolution<3>>);
 } // namespace wetbed

@@ -2,8 +2,11 @@
 
 #include <wetbed/assembly/flow/flow_assembler.h>
 #include <wetbed/boundary_conditions/wall_conditions.h>
+#include <wetbed/core/manufactured_solution.h>
 #include <wetbed/core/parameters.h>
 #include <wetbed/mesh/mesh_input.h>
+
+#include <memory>
 
 namespace wetbed
 {
@@ -32,4 +35,21 @@ struct FlowTermContext
  */
 template <int dim>
 void add_flow_terms (FlowAssembler<dim> &assembler, const FlowTermContext<dim> &context);
+
+/**
+ * The flow assembler of a case: the material of `physical`, the terms of add_flow_terms
+ * and, for a verification run (`manufactured` not null), the manufactured solution's
+ * sources.
+ */
+template <int dim>
+std::unique_ptr<FlowAssembler<dim>>
+make_flow_assembler (const Parameters                 &parameters,
+                     const dealii::Mapping<dim>       &mapping,
+                     const dealii::DoFHandler<dim>    &flow_dof_handler,
+                     const dealii::DoFHandler<dim>    &alpha_dof_handler,
+                     const closures::ClosureEvaluator &closures,
+                     const Boundaries                 &boundaries,
+                     const WallConditions             &walls,
+                     const dealii::Tensor<1, dim>     &moving_wall_velocity,
+                     std::shared_ptr<const ManufacturedSolution<dim>> manufactured);
 } // namespace wetbed
