@@ -34,7 +34,7 @@ root = repository_root()
 SPANS = {
     "quick_start_2d": (None, 0.01),
     "bubbling_bed_2d": (0.1, 0.01),
-    "column_3d": (0.002, 0.001),
+    "column_3d": (0.05, 0.01),
     "wet_column_2d": (0.05, 0.01),
     "couette_cell_2d": (None, 0.1),
     "openfoam_fluidisedBed": (0.02, 0.01),
