@@ -25,7 +25,7 @@ the peak speeds against the case's reference speed, rejected steps, the smallest
 and the divergence checks that fired.
 
 usage: python3 benchmarks/stress.py [--end-time 0.2] [--jobs 2] [--long] [--only NAME ...]
-       python3 benchmarks/stress.py --3d [--end-time-3d 3] [--only NAME ...]
+       python3 benchmarks/stress.py --3d [--end-time-3d 3] [--only NAME ...] [--table]
 (build first: bash scripts/build.sh)
 """
 import argparse
@@ -47,6 +47,8 @@ parser.add_argument("--long", action="store_true")
 parser.add_argument("--only", nargs="*")
 parser.add_argument("--3d", dest="three_d", action="store_true")
 parser.add_argument("--end-time-3d", type=float, default=3.0)
+parser.add_argument("--table", action="store_true",
+                    help="with --3d: only rewrite the table from benchmarks/results/stress_3d/")
 parser.add_argument("--collect", action="store_true",
                     help="only record cases run before results were kept in NAME.json")
 args = parser.parse_args()

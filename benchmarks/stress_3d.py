@@ -63,26 +63,35 @@ def record(label, folder, log, code, wall, end):
     return result
 
 
+def stored_name(label):
+    return "3d_" + re.sub(r"[^a-z0-9]+", "_", label.lower()).strip("_")
+
+
 def run_3d_cases(root, work, args, env):
+    """Runs the selected rows (none with --table), keeps each row's result in
+    benchmarks/results/stress_3d/NAME.json and rewrites the table from all stored rows."""
+    results = os.path.join(root, "benchmarks", "results", "stress_3d")
+    os.makedirs(results, exist_ok=True)
     selected = [c for c in cases(root, work) if not args.only or any(o in c[0] for o in args.only)]
-    for label, base, sections in selected:
-        name = "3d_" + re.sub(r"[^a-z0-9]+", "_", label.lower()).strip("_")
+    for label, base, sections in ([] if args.table else selected):
+        name = stored_name(label)
         prm, folder, log = write_case(work, name, base, args.end_time_3d,
                                       sections + "subsection checkpoint\n set wall time interval = 600\nend\n",
                                       field_interval=1000, progress_interval=50)
         command = ["mpirun", "--oversubscribe", "-np", "2", os.path.join(root, "build", "wetbed"), prm]
         code, wall = run_resumable(command, folder, log, os.path.join(work, name + ".wall"), True, env)
         result = record(label, folder, log, code, wall, args.end_time_3d)
-        json.dump(result, open(os.path.join(work, name + ".json"), "w"))
+        json.dump(result, open(os.path.join(results, name + ".json"), "w"), indent=1)
         print(f"{label}: {result['outcome']}, t = {result['reached']:.4g} s", flush=True)
-    lines = [f"Command: `python3 benchmarks/stress.py --3d --end-time-3d {args.end_time_3d:g}` (2 ranks each, "
-             "resumable: run it again to continue; default path). Reference speed V = 2.62 m/s (the terminal "
+    lines = [f"Command: `python3 benchmarks/stress.py --3d [--end-time-3d T] [--only NAME]` (2 ranks each, "
+             "resumable within a checkout: run it again to continue; default path; each row's end time is in its "
+             "'simulated' column; `--table` rewrites this table from benchmarks/results/stress_3d/). Reference speed V = 2.62 m/s (the terminal "
              "velocity of the 350 µm beads, the cases' largest scale); the speed check fires above 20 V = 52 m/s.", "",
              "| case | outcome | simulated | steps | rejected | peak gas speed (m/s, /V) | peak solids speed (m/s, /V) | "
              "Θ max (m²/s²) | smallest Δt (s) | checks fired | wall s |",
              "|---|---|---|---|---|---|---|---|---|---|---|"]
     for label, _, _ in cases(root, work):
-        stored = os.path.join(work, "3d_" + re.sub(r"[^a-z0-9]+", "_", label.lower()).strip("_") + ".json")
+        stored = os.path.join(results, stored_name(label) + ".json")
         if not os.path.exists(stored):
             lines.append(f"| {label} | not run yet | | | | | | | | | |")
             continue
