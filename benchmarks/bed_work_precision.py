@@ -28,7 +28,7 @@ import os
 import re
 from concurrent.futures import ThreadPoolExecutor
 
-from benchmark_setup import bubble_diameter, replace_doc_section, repository_root, run_case
+from benchmark_setup import bubble_diameter, replace_doc_section, repository_root, run_case, time_mean
 
 root = repository_root()
 VARIANTS = {  # name: (level, description, prm sections)
@@ -64,11 +64,6 @@ os.makedirs(work, exist_ok=True)
 os.makedirs(results, exist_ok=True)
 
 
-def time_mean(rows, column):
-    after = [r for r in rows if float(r["time"]) > args.start_up]
-    return sum(float(r[column]) * float(r["time_step"]) for r in after) / sum(float(r["time_step"]) for r in after)
-
-
 def run(name):
     level, description, sections = VARIANTS[name]
     sections = f"\nsubsection mesh\n  set initial refinement = {level}\nend\n" + sections
@@ -77,8 +72,8 @@ def run(name):
     rows = rows[1:]
     record = {"level": level, "variant": description, "cells": int(rows[-1]["active_cells"]),
               "steps": summary["steps"], "rejected": summary["rejected"], "wall": wall, "end": summary["end"],
-              "per_second": wall / summary["end"], "mean_fi": time_mean(rows, "fluidization_index"),
-              "mean_surface": time_mean(rows, "bed_surface_height"), "krylov_per_step": summary["krylov"],
+              "per_second": wall / summary["end"], "mean_fi": time_mean(rows, "fluidization_index", args.start_up),
+              "mean_surface": time_mean(rows, "bed_surface_height", args.start_up), "krylov_per_step": summary["krylov"],
               "frequency": summary["frequency"], "bubble_diameter": bubble_diameter(os.path.join(work, name), args.start_up),
               "start_up": args.start_up, "end_time": args.end_time,
               "outer_per_step": float(outer[-1]) if outer else float("nan")}

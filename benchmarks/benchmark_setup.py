@@ -147,6 +147,13 @@ def replace_doc_section(root, key, title, lines, doc_name="benchmarks.md"):
     print(f"updated doc/{doc_name}")
 
 
+def time_mean(rows, column, start_up):
+    """The time-step-weighted mean of monitors.csv COLUMN over the ROWS after START_UP s."""
+    after = [r for r in rows if float(r["time"]) > start_up]
+    weight = sum(float(r["time_step"]) for r in after)
+    return sum(float(r[column]) * float(r["time_step"]) for r in after) / weight
+
+
 def timer_seconds(text, name):
     """Wall seconds of the TimerOutput section NAME in a screen log (nan if absent)."""
     m = re.search(r"\| " + re.escape(name) + r"\s*\|\s*\d+\s*\|\s*([\d.e+-]+)s", text)

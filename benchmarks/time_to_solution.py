@@ -42,7 +42,7 @@ import os
 from concurrent.futures import ThreadPoolExecutor
 
 from benchmark_setup import (bubble_diameter, dominant_frequency, read_case, replace_doc_section,
-                             repository_root, run_resumable, write_case)
+                             repository_root, run_resumable, time_mean, write_case)
 
 root = repository_root()
 CASES = {  # name: (prm, ranks, end time, start-up, extra sections)
@@ -124,12 +124,6 @@ work = os.path.join(root, "build", "benchmarks", "time_to_solution")
 results = os.path.join(root, "benchmarks", "results", "time_to_solution")
 os.makedirs(work, exist_ok=True)
 os.makedirs(results, exist_ok=True)
-
-
-def time_mean(rows, column, start_up):
-    after = [r for r in rows if float(r["time"]) > start_up]
-    weight = sum(float(r["time_step"]) for r in after)
-    return sum(float(r[column]) * float(r["time_step"]) for r in after) / weight
 
 
 def run(job):

@@ -35,6 +35,13 @@ double granular_sound (const SolverState<dim> &s, const double alpha, const doub
 template <int dim>
 WaveSpeeds evaluate_wave_speeds (const SolverState<dim> &s)
 {
+  // the sound speed once per alpha_s node (owned and ghost), not per cell around it
+  typename SolverState<dim>::AlphaVector node_sound (s.alpha);
+  for (unsigned int i = 0; i < node_sound.locally_owned_size () +
+                                   node_sound.get_partitioner ()->n_ghost_indices ();
+       ++i)
+    node_sound.local_element (i) =
+        granular_sound (s, s.alpha.local_element (i), s.theta.local_element (i));
   std::vector<types::global_dof_index> dofs (s.flow_fe.n_dofs_per_cell ()),
       alpha_cell_dofs (s.alpha_fe.n_dofs_per_cell ());
   const unsigned int n_nodes   = s.flow_fe.base_element (0).n_dofs_per_cell ();
@@ -65,10 +72,7 @@ WaveSpeeds evaluate_wave_speeds (const SolverState<dim> &s)
         {
           holds_solids = true;
           solids       = std::max (solids, std::sqrt (s2));
-          sound        = std::max (sound,
-                            granular_sound (s,
-                                            s.alpha (alpha_cell_dofs[node]),
-                                            s.theta (alpha_cell_dofs[node])));
+          sound        = std::max (sound, node_sound (alpha_cell_dofs[node]));
         }
       }
       gas_speed            = std::max (gas_speed, gas);
