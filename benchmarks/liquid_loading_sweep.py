@@ -25,6 +25,7 @@ on another machine (or with another build, --binary) keeps all its rows.
 
 usage: python3 benchmarks/liquid_loading_sweep.py [--end-time 5] [--start-up 1]
            [--loadings 0 0.027 ...] [--jobs 2] [--summarize-only]
+           [--maximum-wet-viscosity MU] [--approach-only]
 (build first: bash scripts/build.sh). --jobs runs that many cases at once, one core each.
 """
 import argparse
@@ -46,6 +47,8 @@ parser.add_argument("--jobs", type=int, default=1)
 parser.add_argument("--summarize-only", action="store_true")
 parser.add_argument("--maximum-wet-viscosity", type=float,
                     help="cap of mu_wet (Pa s) instead of the case's; a sensitivity study, kept in WORK/cap_<value>")
+parser.add_argument("--approach-only", action="store_true",
+                    help="wet particles/lubrication stress = approach only (kept in WORK/approach_only)")
 parser.add_argument("--binary", help="the wetbed executable (default: build/wetbed); to finish a sweep "
                     "with the build it was started with")
 parser.add_argument("--work", default=os.path.join(root, "build", "benchmarks", "liquid_loading_sweep"))
@@ -55,6 +58,10 @@ if args.maximum_wet_viscosity is not None:
     args.work = os.path.join(args.work, f"cap_{args.maximum_wet_viscosity:g}")
     cap = f"  set maximum wet viscosity = {args.maximum_wet_viscosity:g}\n"
     suffix = f"_cap_{args.maximum_wet_viscosity:g}"
+if args.approach_only:
+    args.work = os.path.join(args.work, "approach_only")
+    cap += "  set lubrication stress = approach only\n"
+    suffix += "_approach_only"
 os.makedirs(args.work, exist_ok=True)
 results = os.path.join(root, "benchmarks", "results", "liquid_loading_sweep" + suffix)
 base = read_case("wet_column_2d")
@@ -159,7 +166,8 @@ def number(value, form):
 
 
 lines = [f"Command: `python3 benchmarks/liquid_loading_sweep.py --end-time {args.end_time:g} --start-up {args.start_up:g} --jobs {args.jobs}"
-         + (f" --maximum-wet-viscosity {args.maximum_wet_viscosity:g}" if cap else "") + "`"
+         + (f" --maximum-wet-viscosity {args.maximum_wet_viscosity:g}" if args.maximum_wet_viscosity is not None else "")
+         + (" --approach-only" if args.approach_only else "") + "`"
          " (resumable: a stopped run continues from its checkpoint; wall time summed over the pieces). Means over"
          f" t > {args.start_up:g} s; the stress split is the share of each part in the summed solids shear"
          " stress μ_i|γ̇| and the dissipation the mean collisional γ over the field outputs' cells with α_s > 0.3.", "",
@@ -228,7 +236,9 @@ if stress_figure:
     fig.savefig(os.path.join(root, "doc", f"liquid_loading_stress{suffix}.png"), dpi=110)
     print(f"wrote doc/liquid_loading_stress{suffix}.png")
 
-replace_doc_section(root, "liquid_loading_sweep" + suffix, "Liquid-loading sweep" + (f", μ_wet capped at {args.maximum_wet_viscosity:g} Pa·s" if cap else ""),
+replace_doc_section(root, "liquid_loading_sweep" + suffix, "Liquid-loading sweep"
+                    + (f", μ_wet capped at {args.maximum_wet_viscosity:g} Pa·s" if args.maximum_wet_viscosity is not None else "")
+                    + (", lubrication stress on approach only" if args.approach_only else ""),
                     lines + ["", f"![FI(t) of the sweep](liquid_loading_fi{suffix}.png)"]
                     + (["", f"![stress split, dissipation and Θ against α_s](liquid_loading_stress{suffix}.png)"] if stress_figure
                        else ["", f"![stress split, dissipation and Θ against α_s, drawn from field outputs that are not "

@@ -168,7 +168,7 @@ int main ()
       const std::string at = " at alpha_s " + std::to_string (r.alpha) + ", Theta " +
                              std::to_string (r.theta) + ", I_2D " +
                              std::to_string (r.i2d);
-      const WetClosures w = wet.evaluate (r.alpha, r.theta, r.i2d);
+      const WetClosures w = wet.evaluate (r.alpha, r.theta, r.i2d, 10.0);
       check_close (w.gap, r.gap, 1e-12, "gap" + at);
       check_close (w.rupture_distance, lian, 1e-12, "h_c" + at);
       check_close (w.approach_velocity, r.approach, 1e-12, "u_dot" + at);
@@ -195,10 +195,38 @@ int main ()
   }
   {
     const WetParticles wet (liquid, glass, "Lian", "bridge-gated");
-    check (wet.evaluate (0.2, 1e-3, 1).regime (liquid.asperity) == "ruptured" &&
-               wet.evaluate (0.45, 1e-3, 1).regime (liquid.asperity) == "bridged" &&
-               wet.evaluate (0.59, 1e-3, 1).regime (liquid.asperity) == "contact",
+    check (wet.evaluate (0.2, 1e-3, 1, 0.0).regime (liquid.asperity) == "ruptured" &&
+               wet.evaluate (0.45, 1e-3, 1, 0.0).regime (liquid.asperity) == "bridged" &&
+               wet.evaluate (0.59, 1e-3, 1, 0.0).regime (liquid.asperity) == "contact",
            "regimes ruptured / bridged / contact");
+  }
+
+  // `lubrication stress = approach only`: P_wet and mu_wet unchanged where the solids
+  // converge (div u_s <= 0), scaled by eps^2/(eps^2 + div^2) where they separate (one
+  // half at div = eps), the literal model's values otherwise; e_wet unaffected
+  {
+    const WetParticles     literal (liquid, glass, "Lian", "bridge-gated");
+    LiquidBridgeProperties approach = liquid;
+    approach.approach_only          = true;
+    const WetParticles resisting (approach, glass, "Lian", "bridge-gated");
+    const double       eps = liquid.strain_rate_regularisation;
+    for (const double divergence : {-5.0, 0.0, eps, 3 * eps, 100.0})
+    {
+      const WetClosures a = literal.evaluate (0.45, 1e-3, 1.0, divergence);
+      const WetClosures b = resisting.evaluate (0.45, 1e-3, 1.0, divergence);
+      const double      expected =
+          divergence <= 0 ? 1.0 : eps * eps / (eps * eps + divergence * divergence);
+      const std::string at = " at div u_s = " + std::to_string (divergence);
+      check (a.pressure > 0 && a.approach_weight == 1.0, "literal weight" + at);
+      check_close (b.approach_weight, expected, 1e-14, "approach weight" + at);
+      check_close (b.pressure, expected * a.pressure, 1e-12, "approach-only P_wet" + at);
+      check (std::abs (b.restitution - a.restitution) == 0.0, "approach-only e_wet" + at);
+      if (divergence <= 0)
+        check (b.viscosity == a.viscosity, "approach-only mu_wet" + at);
+      else
+        check (b.viscosity < a.viscosity, "approach-only mu_wet lower" + at);
+    }
+    check_close (approach_weight (eps, eps), 0.5, 1e-15, "approach weight 1/2 at eps");
   }
 
   // both ends of the window, smoothed (width 0.05): the weight is exactly 1/2 there and
@@ -216,7 +244,7 @@ int main ()
         const bool        upper  = end == lian;
         const double      h      = end * (1 + side);
         const double      alpha  = fraction_at_gap (h, d);
-        const WetClosures w      = wet.evaluate (alpha, theta, 1.0);
+        const WetClosures w      = wet.evaluate (alpha, theta, 1.0, 0.0);
         const double      bridge = bridge_pressure (
             alpha, h, approach_velocity (theta, 1.5), liquid.liquid_viscosity, d);
         const bool        inside   = upper ? side < 0 : side > 0;

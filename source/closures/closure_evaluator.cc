@@ -16,14 +16,15 @@ ClosureEvaluator::ClosureEvaluator (const DragModel             &drag,
 PointClosures ClosureEvaluator::evaluate (const double alpha_s,
                                           const double theta,
                                           const double slip,
-                                          const double shear_rate) const
+                                          const double shear_rate,
+                                          const double velocity_divergence) const
 {
   PointClosures c;
   c.alpha_s           = std::max (alpha_s, 0.0);
   c.inertial_fraction = inertial_fraction (alpha_s);
   c.coupling_drag     = drag_law->coefficient (c.inertial_fraction, slip, properties);
   c.shear_rate        = shear_rate;
-  c.stress            = stress (alpha_s, theta, shear_rate);
+  c.stress            = stress (alpha_s, theta, shear_rate, velocity_divergence);
   return c;
 }
 
@@ -44,10 +45,11 @@ double ClosureEvaluator::inertial_fraction (const double alpha_s) const
 
 SolidsStress ClosureEvaluator::stress (const double alpha_s,
                                        const double theta,
-                                       const double shear_rate) const
+                                       const double shear_rate,
+                                       const double velocity_divergence) const
 {
   return stress_model->evaluate (
-      {std::max (alpha_s, 0.0), std::max (theta, 0.0), shear_rate});
+      {std::max (alpha_s, 0.0), std::max (theta, 0.0), shear_rate, velocity_divergence});
 }
 
 double ClosureEvaluator::compaction_pressure (const double alpha_s) const
@@ -93,7 +95,8 @@ void CellClosures::evaluate (const ClosureEvaluator                    &evaluato
         evaluator.evaluate (alpha_s_q[q],
                             theta_q[q],
                             slip_q[q],
-                            ClosureEvaluator::shear_rate<dim> (grad_u_s_q[q]));
+                            ClosureEvaluator::shear_rate<dim> (grad_u_s_q[q]),
+                            dealii::trace (grad_u_s_q[q]));
     alpha_s[q]           = c.alpha_s;
     inertial_fraction[q] = c.inertial_fraction;
     coupling_drag[q]     = c.coupling_drag;

@@ -64,6 +64,16 @@ void WetParticleParameters::declare_parameters (ParameterHandler &prm)
                      Double (),
                      "eps (1/s) in |gamma_dot| = 2 sqrt(I_2D + eps^2) of mu_wet.");
   prm.declare_entry ("maximum wet viscosity", "1000", Double (), "Cap of mu_wet (Pa s).");
+  prm.declare_entry (
+      "lubrication stress",
+      "approach and separation",
+      Selection ("approach and separation|approach only"),
+      "Where the liquid-bridge stress (P_wet and mu_wet) acts. approach and "
+      "separation: everywhere, as seed 000 writes it; a lubrication film resists "
+      "separation as much as approach, so the wet bed gets a tensile strength. "
+      "approach only: where the solids converge (div u_s < 0), weighted by "
+      "eps^2/(eps^2 + div u_s^2) where they separate, eps the strain rate "
+      "regularisation (doc/theory.md, \"Wet closures\").");
   prm.declare_entry ("wet pressure in solids pressure",
                      "false",
                      Bool (),
@@ -92,6 +102,7 @@ void WetParticleParameters::parse_parameters (ParameterHandler &prm,
   rupture_distance                  = prm.get ("rupture distance");
   restitution                       = prm.get ("restitution");
   pressure_in_solids_pressure       = prm.get_bool ("wet pressure in solids pressure");
+  liquid.approach_only              = prm.get ("lubrication stress") == "approach only";
   prm.leave_subsection ();
   liquid.stability_angle = phi_degrees * M_PI / 180.0;
   const std::string s    = "wet particles/";

@@ -151,8 +151,9 @@ void write_closure_table (const Parameters                &parameters,
         << c.dissipation_factor * std::pow (p.theta, 1.5) << ',' << c.restitution;
     if (wet)
     {
+      // at div u_s = 0: the lubrication stress acts in full in either reading
       const auto w =
-          wet->evaluate (p.alpha_s, p.theta, 0.25 * p.shear_rate * p.shear_rate);
+          wet->evaluate (p.alpha_s, p.theta, 0.25 * p.shear_rate * p.shear_rate, 0.0);
       out << ',' << w.gap << ',' << w.rupture_distance << ','
           << w.regime (wet->liquid ().asperity) << ',' << w.approach_velocity << ','
           << w.pressure << ',' << w.viscosity << ',' << w.stokes << ','

@@ -203,9 +203,10 @@ void FieldOutput<dim>::write (const SolverState<dim> &s)
       {
         const double shear_rate =
             closures::ClosureEvaluator::shear_rate<dim> (grad_u_s[q]);
-        const double a      = std::max (alpha_q[q], 0.0);
-        const auto   stress = closure_evaluator.stress (a, theta_q[q], shear_rate);
-        const double JxW    = flow_values.JxW (q);
+        const double a = std::max (alpha_q[q], 0.0);
+        const auto   stress =
+            closure_evaluator.stress (a, theta_q[q], shear_rate, trace (grad_u_s[q]));
+        const double JxW = flow_values.JxW (q);
         integral += closure_evaluator.drag (a, (u_g[q] - u_s[q]).norm ()) * JxW;
         viscosity += stress.shear_viscosity * JxW;
         volume += JxW;

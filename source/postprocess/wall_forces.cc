@@ -78,7 +78,10 @@ WallForces evaluate_wall_forces (const SolverState<dim> &s)
           const double                 JxW    = flow_values.JxW (q);
           const double                 a_s    = std::max (a[q], 0.0);
           const closures::SolidsStress stress = s.closures.stress (
-              a_s, theta_q[q], closures::ClosureEvaluator::shear_rate<dim> (grad_u_s[q]));
+              a_s,
+              theta_q[q],
+              closures::ClosureEvaluator::shear_rate<dim> (grad_u_s[q]),
+              trace (grad_u_s[q]));
           // MFIX convention: mu_s, lambda_s carry alpha_s (doc/theory.md, "Conventions")
           const Tensor<2, dim> tau_s =
               viscous (grad_u_s[q], stress.shear_viscosity, stress.bulk_viscosity);

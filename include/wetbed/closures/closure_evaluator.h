@@ -47,9 +47,13 @@ public:
                     const GasParticleProperties &gas_particle,
                     double                       residual_solids_fraction);
 
-  /** All closures at a point with the slip |u_g - u_s| and the shear rate of u_s. */
-  PointClosures
-  evaluate (double alpha_s, double theta, double slip, double shear_rate) const;
+  /** All closures at a point with the slip |u_g - u_s|, the shear rate and the
+   * divergence of u_s. */
+  PointClosures evaluate (double alpha_s,
+                          double theta,
+                          double slip,
+                          double shear_rate,
+                          double velocity_divergence) const;
 
   /** beta(max(alpha_s, 0), slip): the drag as the physics has it. */
   double drag (double alpha_s, double slip) const;
@@ -57,8 +61,11 @@ public:
   double coupling_drag (double alpha_s, double slip) const;
   /** max(alpha_s, alpha_res). */
   double inertial_fraction (double alpha_s) const;
-  /** The solids stress at (max(alpha_s, 0), max(Theta, 0), shear rate). */
-  SolidsStress stress (double alpha_s, double theta, double shear_rate) const;
+  /** The solids stress at (max(alpha_s, 0), max(Theta, 0), shear rate, div u_s). */
+  SolidsStress stress (double alpha_s,
+                       double theta,
+                       double shear_rate,
+                       double velocity_divergence = 0) const;
   /** The compaction pressure P_s(alpha_s) (Pa). */
   double compaction_pressure (double alpha_s) const;
   /** dP_s/dalpha_s (Pa). */

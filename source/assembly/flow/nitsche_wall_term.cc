@@ -24,7 +24,8 @@ NitscheWallTerm<dim>::phase_data (const typename FlowTerm<dim>::CellIterator &ce
   const closures::SolidsStress stress =
       evaluator.stress (a,
                         s.face_theta[q],
-                        closures::ClosureEvaluator::shear_rate<dim> (s.face_grad_u_s[q]));
+                        closures::ClosureEvaluator::shear_rate<dim> (s.face_grad_u_s[q]),
+                        trace (s.face_grad_u_s[q]));
   double compaction = 0;
   for (unsigned int j = 0; j < s.closures.nodal_compaction_pressure.size (); ++j)
     compaction +=

@@ -29,8 +29,10 @@ WetContact<Number> WetParticles::contact (const Number &alpha_s,
                       { return rupture->value (u_dot, liquid_properties, particle); });
 }
 
-WetClosures
-WetParticles::evaluate (const double alpha_s, const double theta, const double i2d) const
+WetClosures WetParticles::evaluate (const double alpha_s,
+                                    const double theta,
+                                    const double i2d,
+                                    const double velocity_divergence) const
 {
   const auto              &l = liquid_properties;
   const WetContact<double> c = contact (alpha_s, theta);
@@ -40,11 +42,15 @@ WetParticles::evaluate (const double alpha_s, const double theta, const double i
   w.approach_velocity = approach_velocity (std::max (theta, 1e-14), l.approach_factor);
   w.window            = c.above_asperity * c.bridged;
   const double h      = std::max (c.gap, 0.01 * l.asperity);
-  w.pressure          = alpha_s > 0 ? w.window * bridge_pressure (alpha_s,
-                                                         h,
-                                                         w.approach_velocity,
-                                                         l.liquid_viscosity,
-                                                         particle.particle_diameter)
+  w.approach_weight   = l.approach_only ? approach_weight (velocity_divergence,
+                                                         l.strain_rate_regularisation)
+                                        : 1.0;
+  w.pressure          = alpha_s > 0 ? w.window * w.approach_weight *
+                                 bridge_pressure (alpha_s,
+                                                  h,
+                                                  w.approach_velocity,
+                                                  l.liquid_viscosity,
+                                                  particle.particle_diameter)
                                     : 0.0;
   w.viscosity         = wet_viscosity (w.pressure,
                                std::max (i2d, 0.0),

@@ -65,7 +65,8 @@ public:
     {
       const WetClosures w = wet->evaluate (state.alpha_s,
                                            state.granular_temperature,
-                                           0.25 * state.shear_rate * state.shear_rate);
+                                           0.25 * state.shear_rate * state.shear_rate,
+                                           state.velocity_divergence);
       s.wet_viscosity     = w.viscosity;
       s.wet_pressure      = w.pressure;
       if (wet_pressure_in_solids_pressure)

@@ -20,8 +20,9 @@ namespace wetbed::closures
 struct SolidsState
 {
   double alpha_s;
-  double granular_temperature; // Theta (m^2/s^2); 0 without kinetic theory
-  double shear_rate;           // sqrt(2 D_dev : D_dev) (1/s)
+  double granular_temperature;    // Theta (m^2/s^2); 0 without kinetic theory
+  double shear_rate;              // sqrt(2 D_dev : D_dev) (1/s)
+  double velocity_divergence = 0; // div u_s (1/s)
 };
 
 /** Solids pressure and viscosities at one quadrature point. */

@@ -25,6 +25,7 @@ struct LiquidBridgeProperties
   double switch_width;               // relative width of the smoothed on/off switches
   double strain_rate_regularisation; // eps in |gamma_dot| = 2 sqrt(I_2D + eps^2) (1/s)
   double maximum_viscosity;          // cap of mu_wet (Pa s)
+  bool   approach_only = false;      // lubrication stress only where div u_s < 0
 };
 
 /** Particle data the wet closures need. */
@@ -127,6 +128,19 @@ Number wet_viscosity (const Number &wet_pressure,
                                                 stability_angle,
                                                 regularisation,
                                                 maximum_viscosity / std::sqrt (2.0));
+}
+
+/** Weight of the lubrication stress (P_wet and mu_wet) on the solids' dilatation
+ * div u_s (1/s) when it resists only approach: 1 where the solids converge (div u_s <=
+ * 0), eps^2/(eps^2 + div u_s^2) where they separate, eps the strain rate
+ * regularisation (smooth at 0; doc/theory.md, "Wet closures"). */
+inline double approach_weight (const double velocity_divergence,
+                               const double regularisation)
+{
+  if (velocity_divergence <= 0.0)
+    return 1.0;
+  const double e2 = regularisation * regularisation;
+  return e2 / (e2 + velocity_divergence * velocity_divergence);
 }
 
 /**

@@ -16,7 +16,8 @@ struct WetClosures
   double rupture_distance;  // h_c (m)
   double approach_velocity; // u_dot (m/s)
   double window;            // bridged-contact weight in [0, 1] (1: h_a < h <= h_c)
-  double pressure;          // P_wet (Pa), the window applied
+  double approach_weight;   // 1, or < 1 where the solids separate (approach only)
+  double pressure;          // P_wet (Pa), the window and approach weight applied
   double viscosity;         // mu_wet (Pa s), capped
   double stokes;            // St
   double critical_stokes;   // St*
@@ -45,8 +46,12 @@ public:
   template <typename Number>
   WetContact<Number> contact (const Number &alpha_s, const Number &theta) const;
 
-  /** All closures; second_invariant = I_2D of the solids strain rate. */
-  WetClosures evaluate (double alpha_s, double theta, double second_invariant) const;
+  /** All closures; second_invariant = I_2D of the solids strain rate,
+   * velocity_divergence = div u_s (1/s; used by `lubrication stress = approach only`). */
+  WetClosures evaluate (double alpha_s,
+                        double theta,
+                        double second_invariant,
+                        double velocity_divergence) const;
 
   /** e_wet alone (the collisional dissipation). */
   double restitution (double alpha_s, double theta) const;
