@@ -7,6 +7,7 @@ usage: prm_inputs.py WETBED_EXECUTABLE SOURCE_DIR WORK_DIR
 import csv
 import fcntl
 import hashlib
+import json
 import math
 import os
 import re
@@ -297,10 +298,27 @@ if digest and hashlib.sha256(open(monitors, "rb").read()).hexdigest() != digest:
     failures.append("an existing monitors.csv was changed by a bad-input run")
 
 # 3. the command line
-for args, expected_code in ((["--help"], 0), (["--print-parameters"], 0), ([], 1), (["/nonexistent.prm"], 2)):
+for args, expected_code in ((["--help"], 0), (["--print-parameters"], 0), (["--print-parameters", "json"], 0),
+                            (["--print-parameters", "xml"], 2), ([], 1), (["/nonexistent.prm"], 2)):
     p = subprocess.run([wetbed] + args, capture_output=True, text=True)
     if p.returncode != expected_code:
         failures.append(f"wetbed {' '.join(args)}: exit {p.returncode}, expected {expected_code}")
+# the JSON listing parses and every entry has its documentation and pattern
+listing = json.loads(subprocess.run([wetbed, "--print-parameters", "json"], capture_output=True, text=True).stdout)
+
+
+def entries(node, path=""):
+    for key, value in node.items():
+        if isinstance(value, dict) and "value" in value and "pattern_description" in value:
+            yield path + key, value
+        elif isinstance(value, dict):
+            yield from entries(value, path + key + "/")
+
+
+described = list(entries(listing))
+if len(described) < 100 or any(not e["documentation"].strip() for _, e in described):
+    failures.append(f"--print-parameters json: {len(described)} entries, some without documentation: "
+                    f"{[n for n, e in described if not e['documentation'].strip()][:5]}")
 # --threads N (threads per rank): anything but an integer >= 1 exits 2 naming it
 for args in (["--threads", "0"], ["--threads", "two"], ["--threads", "2.5"], ["--threads"]):
     p = subprocess.run([wetbed, os.path.join(source, "prm", "bubbling_bed_2d.prm")] + args,

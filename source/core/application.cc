@@ -29,8 +29,11 @@ void print_usage (std::ostream &out)
          "output folder\n"
          "  wetbed CASE.prm --threads N    N threads per rank for the flow assembly "
          "(default 1)\n"
-         "  wetbed --print-parameters      every parameter with default and "
+         "  wetbed --print-parameters [json]\n"
+         "                                 every parameter with default and "
          "documentation\n"
+         "                                 (json: with its pattern, for "
+         "scripts/make_parameter_doc.py)\n"
          "  wetbed closures CASE.prm [--alpha-s A,..] [--theta T,..] [--shear-rate "
          "G,..]\n"
          "                 [--points FILE]  every dry and wet closure of the case at "
@@ -278,6 +281,25 @@ int run_application (int argc, char **argv)
       return 2;
     }
   }
+  if (argc >= 2 && std::string (argv[1]) == "--print-parameters")
+  {
+    dealii::ParameterHandler prm;
+    Parameters::declare_parameters (prm);
+    const bool json = argc == 3 && std::string (argv[2]) == "json";
+    if (argc > 2 && !json)
+    {
+      if (root)
+        std::cerr << "wetbed: error: --print-parameters takes no argument or `json`, "
+                     "not `"
+                  << argv[2] << "`" << std::endl;
+      return 2;
+    }
+    if (root)
+      prm.print_parameters (std::cout,
+                            json ? dealii::ParameterHandler::JSON
+                                 : dealii::ParameterHandler::PRM);
+    return 0;
+  }
   const bool overwrite = take_flag (argc, argv, "--overwrite");
   const bool resume    = argc == 3 && std::string (argv[2]) == "--resume";
   if (argc != 2 && !resume)
@@ -291,14 +313,6 @@ int run_application (int argc, char **argv)
   {
     if (root)
       print_usage (std::cout);
-    return 0;
-  }
-  if (argument == "--print-parameters")
-  {
-    dealii::ParameterHandler prm;
-    Parameters::declare_parameters (prm);
-    if (root)
-      prm.print_parameters (std::cout, dealii::ParameterHandler::PRM);
     return 0;
   }
   try

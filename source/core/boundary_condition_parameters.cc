@@ -99,10 +99,11 @@ void BoundaryConditionParameters::declare_parameters (ParameterHandler &prm)
                      "How u.n = 0 is imposed on slip walls (free-slip, partial-slip, "
                      "Johnson-Jackson): symmetric Nitsche (weak, with the mapped "
                      "normal at the quadrature points) or strong no-normal-flux "
-                     "constraints at the nodes. On curved 3D walls Nitsche needs "
-                     "`linear solver/velocity smoother = block Gauss-Seidel` and costs "
-                     "the velocity gradient half an order (doc/theory.md, \"Solving "
-                     "Nitsche on a curved wall\").");
+                     "constraints at the nodes. On curved 3D walls with the velocity "
+                     "AMG (`linear solver/operator = assembled`) Nitsche needs "
+                     "`linear solver/velocity smoother = block Gauss-Seidel`; its "
+                     "velocity gradient converges more slowly there than with "
+                     "`strong` (doc/theory.md, \"Solving Nitsche on a curved wall\").");
   prm.declare_entry ("Nitsche penalty",
                      "10",
                      Double (),

@@ -53,9 +53,10 @@ void KineticTheoryParameters::declare_parameters (ParameterHandler &prm)
       "1e-3",
       Double (),
       "Floor of mu_s (Pa s) where alpha_s or Theta vanish (about the dilute "
-      "kinetic-theory viscosity 0.1 rho_s d sqrt(Theta) at Theta ~ 1e-4). With 1e-5 "
-      "the dilute splash-zone solids velocity decouples and oscillates (+-30 m/s at "
-      "alpha_s ~ 1e-5 next to the walls) and FGMRES breaks down (doc/theory.md).");
+      "kinetic-theory viscosity 0.1 rho_s d sqrt(Theta) at Theta ~ 1e-4). A much "
+      "lower floor lets the solids velocity of the dilute splash zone next to the "
+      "walls lose its viscous coupling, oscillate node to node and break FGMRES "
+      "down (doc/theory.md \"Dilute regions\").");
   prm.declare_entry (
       "minimum granular temperature", "1e-10", Double (), "Floor of Theta (m^2/s^2).");
   prm.declare_entry (

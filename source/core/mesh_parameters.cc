@@ -115,9 +115,9 @@ void MeshParameters::declare_parameters (ParameterHandler &prm)
       Double (0, 100),
       "Load balancing: the cost of a cell face on a wall, relative to the cost of a "
       "cell (1), when the MPI ranks' partition is made (at the start, and at every "
-      "adaptation with p4est). 0: the cells are balanced by count. Measured "
-      "(doc/benchmarks.md): a Johnson-Jackson wall face adds ~0.7 of a cell's flow "
-      "assembly in 3D (~0.3 of its whole step) and nothing measurable in 2D.");
+      "adaptation with p4est). 0: the cells are balanced by count, right in 2D; a "
+      "Johnson-Jackson wall face in 3D adds a sizeable part of a cell's cost "
+      "(doc/benchmarks.md \"What a cell costs: the load-balancing model\").");
   prm.leave_subsection ();
 }
 

@@ -312,14 +312,17 @@ void LinearSolverParameters::declare_parameters (ParameterHandler &prm)
       "velocity smoother",
       "Chebyshev",
       Selection ("Chebyshev|ILU|block Gauss-Seidel"),
-      "ML smoother on the two-velocity block. Chebyshev (default): more "
-      "FGMRES iterations than ILU but cheaper ones (2D bed start-up 29 vs "
-      "51 per solve, 3D column start-up 145 s vs 229 s); ILU sees the drag "
+      "ML smoother on the velocity block, with `velocity preconditioner = "
+      "AMG` (the assembled path). Chebyshev (default): more FGMRES "
+      "iterations than ILU but cheaper ones, less wall time overall "
+      "(doc/theory.md \"Smoother and hierarchy reuse\"); ILU sees the drag "
       "coupling of the two velocities inside a node. block Gauss-Seidel: "
       "symmetric Gauss-Seidel on node blocks (all velocity components of a "
       "support point solved together); needed for Nitsche no-penetration on "
-      "curved walls, whose penalty couples the components of a wall node "
-      "(T11: the point smoothers stall).");
+      "curved walls with the AMG, whose point smoothers stall on the "
+      "penalty's coupling of a wall node's components (doc/theory.md "
+      "\"Solving Nitsche on a curved wall\"). The p-multigrid's node-block "
+      "smoother needs no such choice.");
   prm.declare_entry (
       "rotation modes",
       "false",
@@ -330,10 +333,10 @@ void LinearSolverParameters::declare_parameters (ParameterHandler &prm)
   prm.declare_entry ("smoother sweeps",
                      "4",
                      Integer (1, 10),
-                     "ML smoother sweeps (the Chebyshev degree). 4 rather than 2 halves "
-                     "the FGMRES iterations of the bubbling 2D bed (117 -> 64 per step "
-                     "over 0.1 s at 600 cells) and cuts its wall time by 21% "
-                     "(benchmarks/solver_diagnosis.py, doc/benchmarks.md).");
+                     "ML smoother sweeps (the Chebyshev degree). More sweeps make each "
+                     "V-cycle costlier but cut the FGMRES iterations; 4 rather than 2 "
+                     "saves wall time on the bubbling 2D bed (doc/benchmarks.md "
+                     "\"Where the FGMRES iterations come from (2D bed, start-up)\").");
   prm.declare_entry ("inner solves",
                      "V-cycle",
                      Selection ("V-cycle|exact|exact velocity|exact coarse"),
@@ -365,11 +368,12 @@ void LinearSolverParameters::declare_parameters (ParameterHandler &prm)
       Integer (1),
       "Rebuild the velocity AMG (with the p-multigrid: its coarse AMG and "
       "smoother, whose coarse matrix is assembled only for such a solve) and "
-      "the Schur AMG at least every this many linear solves. A "
-      "solve with a reused hierarchy is capped at 3x the iterations right "
-      "after its build; if it misses that the hierarchy is rebuilt and the "
-      "solve repeated. Measured on the 3D column: 10 cuts the wall time by "
-      "40% against 1 (rebuild every solve); neutral in 2D");
+      "the Schur AMG at least every this many linear solves (1: at every "
+      "solve). A solve with a reused hierarchy gets an iteration cap from the "
+      "convergence rate right after its build; if it misses that the "
+      "hierarchy is rebuilt and the solve repeated. Reuse pays where a build "
+      "is expensive against a solve, as in 3D (doc/theory.md \"Smoother and "
+      "hierarchy reuse\").");
   prm.declare_entry ("verbose", "false", Bool (), "Print every linear solve.");
   prm.declare_entry (
       "operator",
@@ -379,8 +383,9 @@ void LinearSolverParameters::declare_parameters (ParameterHandler &prm)
       "matrix) or `matrix-free` (sum-factorised cell and face integrals "
       "of the same bilinear form, doc/theory.md \"Matrix-free flow "
       "operator\"). `automatic`: matrix-free with the p-multigrid in 2D and "
-      "3D (3D column: 6.7-8.4x less wall time than assembled at 792 cells, "
-      "12.8-14.1x at 6,336; 2D beds 1.2-2.0x, doc/benchmarks.md).");
+      "3D, the faster path on the shipped cases, by more in 3D and on finer "
+      "meshes (doc/benchmarks.md \"Cost of the 3D column by flow-solve path\" "
+      "and \"The 2D beds by flow-solve path\").");
   prm.declare_entry (
       "velocity preconditioner",
       "automatic",
@@ -398,11 +403,10 @@ void LinearSolverParameters::declare_parameters (ParameterHandler &prm)
       Integer (1, 10),
       "With `velocity preconditioner = p-multigrid`: the degree of its Chebyshev "
       "smoother on the Q2 operator (operator products per pre- or post-smoothing). "
-      "3D column on 2 ranks: 3 rather than 4 takes the same FGMRES iterations "
-      "(84 vs 85 at 792 cells, 70 vs 69 at 6,336) and 13-16% less Krylov time; 2 "
-      "needs 2.9x the iterations at 6,336 cells. The 2D bubbling bed (first "
-      "0.05 s) takes 6% more Krylov time with 3 than with 4 (5,070 vs 4,155 "
-      "iterations).");
+      "A higher degree makes each V-cycle costlier and cuts the FGMRES "
+      "iterations: 3 suits the 3D column, 4 can be slightly faster on small 2D "
+      "beds, 2 needs many more iterations on fine meshes (doc/theory.md "
+      "\"Velocity p-multigrid\").");
   prm.declare_entry ("check operator",
                      "false",
                      Bool (),
