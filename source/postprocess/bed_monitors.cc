@@ -4,6 +4,7 @@
 #include <wetbed/postprocess/momentum_budget.h>
 #include <wetbed/postprocess/pressure_drop.h>
 #include <wetbed/postprocess/wall_forces.h>
+#include <wetbed/solvers/flow_system.h>
 
 #include <deal.II/base/mpi.h>
 

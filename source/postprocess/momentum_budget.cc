@@ -1,5 +1,6 @@
 #include <wetbed/assembly/inertial_fraction.h>
 #include <wetbed/postprocess/momentum_budget.h>
+#include <wetbed/solvers/flow_system.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>

@@ -12,6 +12,8 @@
 #include <wetbed/core/kinetic_theory_parameters.h>
 #include <wetbed/core/mesh_parameters.h>
 #include <wetbed/core/momentum_form.h>
+#include <wetbed/core/physical_properties.h>
+#include <wetbed/core/solids_stress_parameters.h>
 #include <wetbed/core/spectrum_parameters.h>
 #include <wetbed/core/statistics_parameters.h>
 #include <wetbed/core/wet_particle_parameters.h>
@@ -21,54 +23,6 @@
 
 namespace wetbed
 {
-/** `subsection physical properties`: both phases, gravity, packing limit. */
-struct PhysicalProperties
-{
-  double               gas_density, gas_viscosity;
-  double               particle_density, particle_diameter;
-  double               maximum_packing;
-  double               residual_solids_fraction; // floor of alpha_s in inertia and drag
-  dealii::Tensor<1, 3> gravity;
-
-  static void declare_parameters (dealii::ParameterHandler &prm);
-  void        parse_parameters (dealii::ParameterHandler &prm);
-};
-
-/**
- * The unit vector against gravity in the space of the mesh (the in-plane part in 2D);
- * where gravity has no component there (a 2D mesh lying flat, gravity along z) the
- * last axis.
- */
-template <int dim>
-dealii::Tensor<1, dim> upward_direction (const dealii::Tensor<1, 3> &gravity)
-{
-  dealii::Tensor<1, dim> up;
-  for (unsigned int d = 0; d < dim; ++d)
-    up[d] = -gravity[d];
-  if (up.norm () <= 1e-12 * gravity.norm ())
-  {
-    up          = dealii::Tensor<1, dim> ();
-    up[dim - 1] = 1.0;
-    return up;
-  }
-  return up / up.norm ();
-}
-
-/** `subsection solids stress`: the rheology of the particle phase. */
-struct SolidsStressParameters
-{
-  std::string model;
-  double      shear_viscosity;          // Pa s (constant-viscosity model)
-  double      frictional_coefficient;   // Fr, Pa
-  double      frictional_exponent_n;    // n
-  double      frictional_exponent_p;    // p
-  double      frictional_onset;         // alpha_fr,min
-  double      minimum_packing_distance; // floor of (alpha_max - alpha)
-
-  static void declare_parameters (dealii::ParameterHandler &prm);
-  void        parse_parameters (dealii::ParameterHandler &prm, double maximum_packing);
-};
-
 /** `subsection initial conditions`. */
 struct InitialConditionParameters
 {

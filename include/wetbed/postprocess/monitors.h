@@ -1,20 +1,13 @@
 #pragma once
 
+#include <wetbed/assembly/granular_energy_budget.h>
+
 #include <fstream>
 #include <string>
 #include <vector>
 
 namespace wetbed
 {
-/** Where the granular energy goes (W per metre depth in 2D, W in 3D), integrated. */
-struct GranularEnergyBudget
-{
-  double production    = 0; // viscous heating + compression
-  double dissipation   = 0; // inelastic collisions
-  double drag_exchange = 0; // -3 beta Theta, to the gas
-  double wall_flux     = 0; // G_w - D_w through Johnson-Jackson walls (into the bed)
-};
-
 /** One row of monitors.csv: the state of the bed after an accepted step. */
 struct MonitorRow
 {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <wetbed/assembly/granular_energy_budget.h>
 #include <wetbed/boundary_conditions/wall_conditions.h>
 #include <wetbed/closures/closure_evaluator.h>
 #include <wetbed/closures/kinetic_theory/kinetic_theory.h>
@@ -7,7 +8,6 @@
 #include <wetbed/core/parameters.h>
 #include <wetbed/core/time_integration.h>
 #include <wetbed/mesh/boundaries.h>
-#include <wetbed/postprocess/monitors.h>
 #include <wetbed/solvers/solve_history.h>
 
 #include <deal.II/base/timer.h>

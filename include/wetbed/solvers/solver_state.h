@@ -6,7 +6,6 @@
 #include <wetbed/core/parameters.h>
 #include <wetbed/mesh/boundaries.h>
 #include <wetbed/postprocess/monitors.h>
-#include <wetbed/solvers/flow_system.h>
 #include <wetbed/solvers/time_step_controller.h>
 
 #include <deal.II/distributed/tria.h>
@@ -18,6 +17,9 @@
 
 namespace wetbed
 {
+template <int dim>
+class FlowSystem;
+
 template <int dim>
 class TimeAverages;
 

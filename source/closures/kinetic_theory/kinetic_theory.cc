@@ -1,6 +1,8 @@
 #include <wetbed/closures/kinetic_theory/collisional_terms.h>
 #include <wetbed/closures/kinetic_theory/kinetic_theory.h>
-#include <wetbed/core/parameters.h>
+#include <wetbed/core/kinetic_theory_parameters.h>
+#include <wetbed/core/physical_properties.h>
+#include <wetbed/core/wet_particle_parameters.h>
 
 #include <algorithm>
 

@@ -1,5 +1,6 @@
 #include <wetbed/closures/solids_stress/constant_viscosity.h>
-#include <wetbed/core/parameters.h>
+#include <wetbed/core/physical_properties.h>
+#include <wetbed/core/solids_stress_parameters.h>
 
 namespace wetbed::closures
 {

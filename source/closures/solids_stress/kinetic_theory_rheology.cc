@@ -1,5 +1,8 @@
 #include <wetbed/closures/solids_stress/kinetic_theory_rheology.h>
-#include <wetbed/core/parameters.h>
+#include <wetbed/core/kinetic_theory_parameters.h>
+#include <wetbed/core/physical_properties.h>
+#include <wetbed/core/solids_stress_parameters.h>
+#include <wetbed/core/wet_particle_parameters.h>
 
 namespace wetbed::closures
 {

@@ -1,6 +1,9 @@
 #include <wetbed/closures/solids_stress/solids_stress_laws.h>
 #include <wetbed/core/input_error.h>
-#include <wetbed/core/parameters.h>
+#include <wetbed/core/kinetic_theory_parameters.h>
+#include <wetbed/core/physical_properties.h>
+#include <wetbed/core/solids_stress_parameters.h>
+#include <wetbed/core/wet_particle_parameters.h>
 
 namespace wetbed::closures
 {
