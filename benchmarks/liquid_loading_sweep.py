@@ -139,8 +139,10 @@ def restore(loading):
             {key: numpy.asarray(values) for key, values in (record.get("samples") or {}).items()})
 
 
+stored_loadings = {float(f[len("delta_"):-len("e-2.json")]) for f in os.listdir(results)
+                   if f.startswith("delta_") and f.endswith("e-2.json")} if os.path.isdir(results) else set()
 rows, series, samples = [], {}, {}
-for loading in sorted(args.loadings):
+for loading in sorted(set(args.loadings) | stored_loadings):  # the table keeps the stored rows
     prm, folder, log = case(loading)
     if os.path.exists(os.path.join(folder, "monitors.csv")):
         wall_file = os.path.join(args.work, name(loading) + ".wall")

@@ -499,30 +499,6 @@ bool TwoFluidSolver<dim>::try_time_step (const double dt, const unsigned int bdf
   const BDFCoefficients bdf = bdf_coefficients (bdf_order, dt, previous_time_step);
   make_flow_constraints (time + dt);
   last_krylov_iterations = 0;
-  // the granular temperature (PDE or local equilibrium) from the latest alpha_s and u_s;
-  // false (rejection_reason) if its solve failed
-  const auto update_granular_temperature = [&] ()
-  {
-    const GranularEnergyInputs<dim> inputs{mapping,
-                                           alpha_fe,
-                                           alpha_dof_handler,
-                                           flow_fe,
-                                           flow_dof_handler,
-                                           alpha_constraints,
-                                           boundaries,
-                                           wall_conditions,
-                                           moving_wall_velocity (),
-                                           alpha,
-                                           flow_solution,
-                                           theta_old,
-                                           theta_old2,
-                                           closure_evaluator,
-                                           *kinetic_theory,
-                                           manufactured.get (),
-                                           bdf,
-                                           dt};
-    return granular_energy.update (inputs, theta, solve_history, rejection_reason);
-  };
   // doc/theory.md "Outer iterations": with an outer tolerance, each iteration after the
   // first tests the flow system re-assembled at the latest iterate before solving it,
   // and each flow solve is inexact (a forcing term of that tolerance)
@@ -574,7 +550,7 @@ bool TwoFluidSolver<dim>::try_time_step (const double dt, const unsigned int bdf
       // verification: alpha_s stays the exact field; Theta is solved for where it is
       // manufactured too
       if (kinetic_theory && manufactured->has_granular_temperature () &&
-          !update_granular_temperature ())
+          !update_granular_temperature (bdf, dt))
       {
         return false;
       }
@@ -583,34 +559,70 @@ bool TwoFluidSolver<dim>::try_time_step (const double dt, const unsigned int bdf
     if (adaptive && k > 0 && k + 1 < ts.outer_iterations)
       alpha_iterate = alpha;
     // 2.-3. alpha_s transport and compaction correction (held solids: alpha_s stays)
-    if (!parameters.boundary.hold_solids && !solids_transport.advance ({mapping,
-                                                                        flow_fe,
-                                                                        flow_dof_handler,
-                                                                        flow_owned,
-                                                                        flow_constraints,
-                                                                        alpha_fe,
-                                                                        alpha_dof_handler,
-                                                                        alpha_constraints,
-                                                                        flow_old,
-                                                                        alpha_old,
-                                                                        closure_evaluator,
-                                                                        bdf,
-                                                                        dt},
-                                                                       alpha,
-                                                                       flow_solution,
-                                                                       solve_history,
-                                                                       rejection_reason))
+    if (!parameters.boundary.hold_solids && !advance_solids (bdf, dt))
       return false;
     if (adaptive && k > 0 && k + 1 < ts.outer_iterations)
       alpha_change = largest_change (alpha, alpha_iterate, communicator);
     // 4. granular temperature with the new alpha_s and u_s (PDE or local equilibrium);
     //    it also evolves in a held solids velocity field
-    if (kinetic_theory && !update_granular_temperature ())
+    if (kinetic_theory && !update_granular_temperature (bdf, dt))
     {
       return false;
     }
   }
-  // accept or reject
+  return admissible ();
+}
+
+template <int dim>
+bool TwoFluidSolver<dim>::update_granular_temperature (const BDFCoefficients &bdf,
+                                                       const double           dt)
+{
+  const GranularEnergyInputs<dim> inputs{mapping,
+                                         alpha_fe,
+                                         alpha_dof_handler,
+                                         flow_fe,
+                                         flow_dof_handler,
+                                         alpha_constraints,
+                                         boundaries,
+                                         wall_conditions,
+                                         moving_wall_velocity (),
+                                         alpha,
+                                         flow_solution,
+                                         theta_old,
+                                         theta_old2,
+                                         closure_evaluator,
+                                         *kinetic_theory,
+                                         manufactured.get (),
+                                         bdf,
+                                         dt};
+  return granular_energy.update (inputs, theta, solve_history, rejection_reason);
+}
+
+template <int dim>
+bool TwoFluidSolver<dim>::advance_solids (const BDFCoefficients &bdf, const double dt)
+{
+  return solids_transport.advance ({mapping,
+                                    flow_fe,
+                                    flow_dof_handler,
+                                    flow_owned,
+                                    flow_constraints,
+                                    alpha_fe,
+                                    alpha_dof_handler,
+                                    alpha_constraints,
+                                    flow_old,
+                                    alpha_old,
+                                    closure_evaluator,
+                                    bdf,
+                                    dt},
+                                   alpha,
+                                   flow_solution,
+                                   solve_history,
+                                   rejection_reason);
+}
+
+template <int dim>
+bool TwoFluidSolver<dim>::admissible ()
+{
   double lo = std::numeric_limits<double>::max (), hi = -lo;
   for (unsigned int i = 0; i < alpha.locally_owned_size (); ++i)
   {
@@ -767,7 +779,14 @@ void TwoFluidSolver<dim>::advance ()
                      restore);
     restore ();
   }
-  divergence_checks.accept (checked.kinetic_energy);
+  accept_step (dt, checked.kinetic_energy);
+}
+
+template <int dim>
+void TwoFluidSolver<dim>::accept_step (const double dt, const double kinetic_energy)
+{
+  const auto &ts = parameters.time;
+  divergence_checks.accept (kinetic_energy);
   outer_iterations_run += last_outer_iterations;
   if (!last_outer_converged)
     ++unconverged_steps;
@@ -833,15 +852,19 @@ void TwoFluidSolver<dim>::stop_diverged (const std::string            &why,
 }
 
 template <int dim>
+double TwoFluidSolver<dim>::RunClock::elapsed () const
+{
+  return std::chrono::duration<double> (std::chrono::steady_clock::now () - start)
+      .count ();
+}
+
+template <int dim>
 typename TwoFluidSolver<dim>::RunEnd TwoFluidSolver<dim>::run ()
 {
   if (!initialized)
     initialize ();
-  const auto        &ts                   = parameters.time;
-  const auto         start                = std::chrono::steady_clock::now ();
-  const double       start_time           = time; // not 0 for a resumed run
-  const unsigned int first_step           = step_number;
-  double             next_wall_checkpoint = 1; // multiples of the wall time interval
+  const auto &ts = parameters.time;
+  RunClock    clock{std::chrono::steady_clock::now (), time, step_number};
   if (!resumed)
   {
     record_monitors ();
@@ -849,7 +872,6 @@ typename TwoFluidSolver<dim>::RunEnd TwoFluidSolver<dim>::run ()
     if (parameters.output.field_interval >= 0)
       write_fields ();
   }
-  const auto &checkpoint = parameters.checkpoint;
   while (time < ts.end_time * (1 - 1e-12))
   {
     try
@@ -869,61 +891,84 @@ typename TwoFluidSolver<dim>::RunEnd TwoFluidSolver<dim>::run ()
             << " s" << std::endl;
       return RunEnd::stopped_by_signal;
     }
-    if (parameters.adaptive_refinement.enabled &&
-        step_number % parameters.adaptive_refinement.interval == 0)
-    {
-      adapt_mesh ();
-      update_wave_speeds ();
-      time_step = next_time_step (previous_time_step); // the CFL of the new mesh
-    }
-    StallWatchdog::report_progress ();
-    analyse_bubbles ();
-    record_ect ();
-    accumulate_averages ();
-    // the fields before the checkpoint of the same step: its counters then include this
-    // output, which a resumed run would otherwise skip (and write the next one under its
-    // number)
-    if (field_output.due (time))
-      write_fields ();
-    // a checkpoint on the step count, the wall clock (rank 0's, for all) or SIGUSR1;
-    // SIGTERM/SIGINT/SIGUSR2 write one and stop
-    const SignalRequest request =
-        checkpoint.on_signal ? signal_request (communicator) : SignalRequest::none;
-    const double wall = Utilities::MPI::broadcast (
-        communicator,
-        std::chrono::duration<double> (std::chrono::steady_clock::now () - start)
-            .count (),
-        0);
-    const bool on_clock = checkpoint.wall_time_interval > 0 &&
-                          wall >= next_wall_checkpoint * checkpoint.wall_time_interval;
-    if (on_clock)
-      next_wall_checkpoint = std::floor (wall / checkpoint.wall_time_interval) + 1;
-    if ((checkpoint.interval > 0 && step_number % checkpoint.interval == 0) || on_clock ||
-        request != SignalRequest::none)
-      write_checkpoint ();
-    if (request == SignalRequest::stop)
-    {
-      pcout << "Stop requested by a signal at t = " << time << " (step " << step_number
-            << ")" << std::endl;
+    postprocess_step ();
+    if (checkpoint_or_stop (clock))
       return RunEnd::stopped_by_signal;
-    }
     if (step_number % parameters.output.progress_interval == 0 ||
         time >= ts.end_time * (1 - 1e-12))
-    {
-      const double elapsed =
-          std::chrono::duration<double> (std::chrono::steady_clock::now () - start)
-              .count ();
-      const double eta = elapsed / (time - start_time) * (ts.end_time - time);
-      const auto  &row = monitors.last ();
-      pcout << "step " << std::setw (6) << step_number << "  t = " << std::setw (9)
-            << std::setprecision (5) << time << " s  dt = " << std::setw (9)
-            << row.time_step << "  outer " << last_outer_iterations << "  Krylov "
-            << std::setw (3) << row.krylov << "  FI " << std::setw (7) << row.fluidization
-            << "  alpha_s [" << row.alpha_min << ", " << row.alpha_max << "]  mass drift "
-            << std::setprecision (2) << row.mass_drift << "  wall "
-            << std::setprecision (4) << elapsed << " s  ETA " << eta << " s" << std::endl;
-    }
+      report_progress (clock);
   }
+  finish_run (clock);
+  return RunEnd::finished;
+}
+
+template <int dim>
+void TwoFluidSolver<dim>::postprocess_step ()
+{
+  if (parameters.adaptive_refinement.enabled &&
+      step_number % parameters.adaptive_refinement.interval == 0)
+  {
+    adapt_mesh ();
+    update_wave_speeds ();
+    time_step = next_time_step (previous_time_step); // the CFL of the new mesh
+  }
+  StallWatchdog::report_progress ();
+  analyse_bubbles ();
+  record_ect ();
+  accumulate_averages ();
+  // the fields before the checkpoint of the same step: its counters then include this
+  // output, which a resumed run would otherwise skip (and write the next one under its
+  // number)
+  if (field_output.due (time))
+    write_fields ();
+}
+
+template <int dim>
+bool TwoFluidSolver<dim>::checkpoint_or_stop (RunClock &clock)
+{
+  // a checkpoint on the step count, the wall clock (rank 0's, for all) or SIGUSR1;
+  // SIGTERM/SIGINT/SIGUSR2 write one and stop
+  const auto         &checkpoint = parameters.checkpoint;
+  const SignalRequest request =
+      checkpoint.on_signal ? signal_request (communicator) : SignalRequest::none;
+  const double wall = Utilities::MPI::broadcast (communicator, clock.elapsed (), 0);
+  const bool   on_clock =
+      checkpoint.wall_time_interval > 0 &&
+      wall >= clock.next_wall_checkpoint * checkpoint.wall_time_interval;
+  if (on_clock)
+    clock.next_wall_checkpoint = std::floor (wall / checkpoint.wall_time_interval) + 1;
+  if ((checkpoint.interval > 0 && step_number % checkpoint.interval == 0) || on_clock ||
+      request != SignalRequest::none)
+    write_checkpoint ();
+  if (request == SignalRequest::stop)
+  {
+    pcout << "Stop requested by a signal at t = " << time << " (step " << step_number
+          << ")" << std::endl;
+    return true;
+  }
+  return false;
+}
+
+template <int dim>
+void TwoFluidSolver<dim>::report_progress (const RunClock &clock) const
+{
+  const double elapsed = clock.elapsed ();
+  const double eta =
+      elapsed / (time - clock.start_time) * (parameters.time.end_time - time);
+  const auto &row = monitors.last ();
+  pcout << "step " << std::setw (6) << step_number << "  t = " << std::setw (9)
+        << std::setprecision (5) << time << " s  dt = " << std::setw (9) << row.time_step
+        << "  outer " << last_outer_iterations << "  Krylov " << std::setw (3)
+        << row.krylov << "  FI " << std::setw (7) << row.fluidization << "  alpha_s ["
+        << row.alpha_min << ", " << row.alpha_max << "]  mass drift "
+        << std::setprecision (2) << row.mass_drift << "  wall " << std::setprecision (4)
+        << elapsed << " s  ETA " << eta << " s" << std::endl;
+}
+
+template <int dim>
+void TwoFluidSolver<dim>::finish_run (const RunClock &clock)
+{
+  const auto &checkpoint = parameters.checkpoint;
   if (parameters.output.field_interval == 0)
     write_fields ();
   if (profiles) // at the end too (an output at this time is not repeated)
@@ -931,8 +976,18 @@ typename TwoFluidSolver<dim>::RunEnd TwoFluidSolver<dim>::run ()
   if (checkpoint.at_end &&
       !(checkpoint.interval > 0 && step_number % checkpoint.interval == 0))
     write_checkpoint ();
-  const double elapsed =
-      std::chrono::duration<double> (std::chrono::steady_clock::now () - start).count ();
+  report_cost (clock);
+  timer.print_wall_time_statistics (communicator);
+  write_spectra ();
+}
+
+template <int dim>
+void TwoFluidSolver<dim>::report_cost (const RunClock &clock) const
+{
+  const auto        &ts         = parameters.time;
+  const double       elapsed    = clock.elapsed ();
+  const double       start_time = clock.start_time;
+  const unsigned int first_step = clock.first_step;
   pcout << "Finished: " << step_number << " steps (" << rejected_steps
         << " rejected), wall " << elapsed << " s, "
         << elapsed / std::max (time - start_time, 1e-300) << " s per simulated second, "
@@ -971,9 +1026,6 @@ typename TwoFluidSolver<dim>::RunEnd TwoFluidSolver<dim>::run ()
           << sum (parts.multigrid) / n << ", vectors " << sum (parts.vectors) / n
           << " (ML hierarchies not counted)" << std::endl;
   }
-  timer.print_wall_time_statistics (communicator);
-  write_spectra ();
-  return RunEnd::finished;
 }
 
 template class TwoFluidSolver<2>;

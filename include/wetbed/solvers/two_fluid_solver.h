@@ -47,6 +47,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <chrono>
 #include <functional>
 #include <memory>
 
@@ -147,7 +148,43 @@ private:
   /** Mesh, fields and time-stepping state from the checkpoint (Checkpointing, its
    * parts in order; two_fluid_solver.cc). */
   void resume_from_checkpoint ();
+  /** One attempt at a step of length dt: the outer iterations (doc/theory.md "One time
+   * step"); false, with rejection_reason, when a solve fails or the result is not
+   * admissible. */
   bool try_time_step (double dt, unsigned int bdf_order);
+  /** Theta (PDE or local equilibrium) from the latest alpha_s and u_s; false (with
+   * rejection_reason) when its solve failed. */
+  bool update_granular_temperature (const BDFCoefficients &bdf, double dt);
+  /** The alpha_s transport and the compaction correction (SolidsTransport::advance);
+   * false (with rejection_reason) when the transport would need too many sub-steps. */
+  bool advance_solids (const BDFCoefficients &bdf, double dt);
+  /** Whether the new fields are finite and alpha_s lies in [0, maximum packing]; else
+   * false with rejection_reason. */
+  bool admissible ();
+  /** The accepted step of length dt: counters, the alpha_s time error, the history
+   * shift, the monitors, the next step (which stops the run below the minimum). */
+  void accept_step (double dt, double kinetic_energy);
+
+  /** The wall clock of run() and where it started (a resumed run: not at 0). */
+  struct RunClock
+  {
+    std::chrono::steady_clock::time_point start;
+    double                                start_time;
+    unsigned int                          first_step;
+    double next_wall_checkpoint = 1; // in multiples of the wall time interval
+    double elapsed () const;
+  };
+  /** After an accepted step: mesh adaptation, bubbles, ECT, averages, field output. */
+  void postprocess_step ();
+  /** A checkpoint when due (step count, wall clock, signal); true when a signal asks
+   * the run to stop (after its checkpoint). */
+  bool checkpoint_or_stop (RunClock &clock);
+  /** The progress line. */
+  void report_progress (const RunClock &clock) const;
+  /** The end of a run: the last outputs and checkpoint, the cost report, spectra. */
+  void finish_run (const RunClock &clock);
+  /** Steps, outer iterations, cost per simulated second and per DoF, memory. */
+  void report_cost (const RunClock &clock) const;
   /** flow_solution = x^n + ratio (x^n - x^{n-1}): the first flow solve's initial guess.
    */
   void extrapolate_flow (double ratio);
