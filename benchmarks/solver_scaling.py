@@ -88,7 +88,8 @@ if column:
     command += " --case column_3d"
 if args.ladders:
     command += " --ladders " + " ".join(f'"{name}"' for name in args.ladders)
-settings = ("default solver settings" if args.path == "assembled" else
+settings = ("assembled operator with the ML velocity AMG, otherwise default solver settings"
+            if args.path == "assembled" else
             "matrix-free operator with the velocity p-multigrid, otherwise default solver settings")
 if column:
     settings = ("assembled operator with the ML velocity preconditioner" if args.path == "assembled" else
