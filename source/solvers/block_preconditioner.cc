@@ -4,8 +4,9 @@
 
 namespace wetbed
 {
-BlockPreconditioner::BlockPreconditioner (const LinearSolverParameters &parameters)
-    : parameters (parameters), exact (parameters.inner_solves == "exact"),
+BlockPreconditioner::BlockPreconditioner (const LinearSolverParameters &parameters,
+                                          const AssembledFlowOperator  &op)
+    : parameters (parameters), op (op), exact (parameters.inner_solves == "exact"),
       exact_velocity (exact || parameters.inner_solves == "exact velocity"),
       schur_preconditioner (exact)
 {
@@ -18,17 +19,12 @@ void BlockPreconditioner::set_near_null_space (std::vector<std::vector<double>> 
   dofs_per_node = dofs_per_velocity_node;
 }
 
-void BlockPreconditioner::update (const FlowOperator &op, const bool rebuild_velocity)
+void BlockPreconditioner::update (const bool rebuild_velocity)
 {
-  const auto *assembled = dynamic_cast<const AssembledFlowOperator *> (&op);
-  if (assembled == nullptr)
-    throw std::logic_error ("the block AMG preconditioner needs the assembled flow "
-                            "operator, not '" +
-                            op.name () + "'");
-  gradient = &assembled->gradient_block ();
-  schur    = &assembled->schur_block ();
+  gradient = &op.gradient_block ();
+  schur    = &op.schur_block ();
   if (rebuild_velocity)
-    build_velocity (assembled->velocity_block (), modes, dofs_per_node);
+    build_velocity (op.velocity_block (), modes, dofs_per_node);
   if (rebuild_velocity || !schur_preconditioner.built ())
   {
     schur_preconditioner.build (*schur);

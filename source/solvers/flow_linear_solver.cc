@@ -68,7 +68,6 @@ bool FlowLinearSolver::rebuild_due (const double dt) const
 
 unsigned int
 FlowLinearSolver::solve (const FlowOperator           &op,
-                         const FlowOperator           &preconditioner_source,
                          FlowPreconditioner           &preconditioner,
                          const BlockVector            &rhs,
                          BlockVector                  &solution,
@@ -80,7 +79,7 @@ FlowLinearSolver::solve (const FlowOperator           &op,
   const auto &ls               = parameters;
   auto        rebuild_velocity = [&] ()
   {
-    preconditioner.update (preconditioner_source, true);
+    preconditioner.update (true);
     solves_since_build = 0;
     rate_after_build   = 0;
     dt_at_build        = dt;
@@ -90,7 +89,7 @@ FlowLinearSolver::solve (const FlowOperator           &op,
     if (rebuild_due (dt))
       rebuild_velocity ();
     else
-      preconditioner.update (preconditioner_source, false);
+      preconditioner.update (false);
   }
 
   const double      target        = relative_target * rhs.l2_norm ();

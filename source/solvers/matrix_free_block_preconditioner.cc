@@ -10,25 +10,20 @@ namespace wetbed
 {
 template <int dim>
 MatrixFreeBlockPreconditioner<dim>::MatrixFreeBlockPreconditioner (
-    const LinearSolverParameters &parameters,
-    const AssembledFlowOperator  &schur_source,
-    VelocityMultigrid<dim>       &multigrid)
+    const LinearSolverParameters      &parameters,
+    const MatrixFreeFlowOperator<dim> &op,
+    const AssembledFlowOperator       &schur_source,
+    VelocityMultigrid<dim>            &multigrid)
     : exact_schur (parameters.inner_solves == "exact"),
       exact_velocity (exact_schur || parameters.inner_solves == "exact velocity"),
-      schur_source (schur_source), multigrid (multigrid),
+      schur_source (schur_source), multigrid (multigrid), op (&op),
       schur_preconditioner (exact_schur)
 {
 }
 
 template <int dim>
-void MatrixFreeBlockPreconditioner<dim>::update (const FlowOperator &flow_operator,
-                                                 const bool          rebuild_velocity)
+void MatrixFreeBlockPreconditioner<dim>::update (const bool rebuild_velocity)
 {
-  op = dynamic_cast<const MatrixFreeFlowOperator<dim> *> (&flow_operator);
-  if (op == nullptr)
-    throw std::logic_error ("the p-multigrid preconditioner needs the matrix-free flow "
-                            "operator, not '" +
-                            flow_operator.name () + "'");
   if (gradient.size () != op->velocity_dofs ().n_dofs ())
   {
     op->initialize_velocity_vector (gradient);

@@ -30,15 +30,17 @@ namespace wetbed
 class BlockPreconditioner : public FlowPreconditioner
 {
 public:
-  BlockPreconditioner (const LinearSolverParameters &parameters);
+  /** For the assembled operator `op` (its velocity, gradient and L_c blocks). */
+  BlockPreconditioner (const LinearSolverParameters &parameters,
+                       const AssembledFlowOperator  &op);
 
   /** The near-null space of the velocity block on this mesh (see build_velocity). */
   void set_near_null_space (std::vector<std::vector<double>> modes,
                             unsigned int                     dofs_per_node);
-  /** From an AssembledFlowOperator (the only operator it is made for): the velocity
-   * and Schur hierarchies with `rebuild_velocity` (the Schur one also when it has none
-   * yet); otherwise the last ones are reused. */
-  void update (const FlowOperator &op, bool rebuild_velocity) override;
+  /** The velocity and Schur hierarchies from the operator's current matrices with
+   * `rebuild_velocity` (the Schur one also when it has none yet); otherwise the last
+   * ones are reused. */
+  void update (bool rebuild_velocity) override;
 
   /** Builds (or rebuilds) the velocity hierarchy from the current A with the given
    * near-null space: one vector per mode, each with the locally owned velocity rows in
@@ -55,6 +57,7 @@ public:
 
 private:
   const LinearSolverParameters                 &parameters;
+  const AssembledFlowOperator                  &op;
   dealii::TrilinosWrappers::PreconditionAMG     velocity_amg;
   const dealii::TrilinosWrappers::SparseMatrix *gradient = nullptr;
   const dealii::TrilinosWrappers::SparseMatrix *schur    = nullptr;

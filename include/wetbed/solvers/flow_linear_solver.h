@@ -40,16 +40,15 @@ public:
    * a reused solve that fails rebuilds it too, which no one can foresee. */
   bool rebuild_due (double dt) const;
 
-  /** Solves A x = rhs to |rhs - A x| <= relative_target |rhs| with `op` as A and the
-   * preconditioner updated from `preconditioner_source` (the operator it is made for:
-   * the same, or the assembled matrix beside a matrix-free A); `solution` holds the
+  /** Solves A x = rhs to |rhs - A x| <= relative_target |rhs| with `op` as A and
+   * `preconditioner` (updated from the operator it was made for: the same, or the
+   * assembled matrix beside a matrix-free A); `solution` holds the
    * initial guess on entry (owned layout, constrained entries zero) and the solution on
    * exit (constraints not distributed). Returns the iterations, or invalid_unsigned_int
    * when the solve failed with a fresh preconditioner (the step is then rejected).
    * `before_unforeseen_rebuild` (if set) runs before the rebuild that follows a failed
    * reused solve, which rebuild_due() could not announce. */
   unsigned int solve (const FlowOperator           &op,
-                      const FlowOperator           &preconditioner_source,
                       FlowPreconditioner           &preconditioner,
                       const BlockVector            &rhs,
                       BlockVector                  &solution,

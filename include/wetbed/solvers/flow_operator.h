@@ -8,9 +8,10 @@ namespace wetbed
 {
 /**
  * The linearised flow system (u_g, u_s, p') as the Krylov solver sees it: an operator
- * that can be applied. Implementations: the assembled matrix (AssembledFlowOperator);
- * a matrix-free operator plugs in here. Preconditioners (FlowPreconditioner) take
- * what they need from the implementation they are made for.
+ * that can be applied. Implementations: the assembled matrix (AssembledFlowOperator)
+ * and the matrix-free operator (MatrixFreeFlowOperator, the default). A solve path
+ * (FlowSolvePath) pairs one with the preconditioner made for it, which holds that
+ * operator by its own type.
  */
 class FlowOperator
 {
@@ -25,16 +26,17 @@ public:
   virtual std::string report () const { return {}; }
 };
 
-/** A preconditioner of the flow system, updated from the operator before a solve. */
+/** A preconditioner of the flow system, updated before a solve from the operator it
+ * was made for (given to it on construction). */
 class FlowPreconditioner
 {
 public:
   using BlockVector = dealii::TrilinosWrappers::MPI::BlockVector;
 
   virtual ~FlowPreconditioner () = default;
-  /** Rebuilds from the current operator: the cheap parts always, the velocity part
-   * only with `rebuild_velocity` (otherwise the last one is reused). */
-  virtual void update (const FlowOperator &op, bool rebuild_velocity) = 0;
+  /** Rebuilds from the operator's current state: the cheap parts always, the velocity
+   * part only with `rebuild_velocity` (otherwise the last one is reused). */
+  virtual void update (bool rebuild_velocity)                         = 0;
   virtual void vmult (BlockVector &dst, const BlockVector &src) const = 0;
   /** Inner-solve statistics since the last call (diagnostic modes), else empty. */
   virtual std::string report () const { return {}; }

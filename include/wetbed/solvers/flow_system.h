@@ -3,13 +3,9 @@
 #include <wetbed/assembly/flow/flow_assembler.h>
 #include <wetbed/core/parameters.h>
 #include <wetbed/mesh/boundaries.h>
-#include <wetbed/solvers/assembled_flow_operator.h>
-#include <wetbed/solvers/block_preconditioner.h>
 #include <wetbed/solvers/flow_linear_solver.h>
-#include <wetbed/solvers/matrix_free_block_preconditioner.h>
-#include <wetbed/solvers/matrix_free_flow_operator.h>
+#include <wetbed/solvers/flow_solve_path.h>
 #include <wetbed/solvers/solve_history.h>
-#include <wetbed/solvers/velocity_multigrid.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
@@ -23,13 +19,13 @@ namespace wetbed
 {
 /**
  * The coupled (u_g, u_s, p') system of one outer iteration as a component: its terms
- * (FlowAssembler), the operator they assemble (AssembledFlowOperator), the block
- * preconditioner and the FGMRES solver with its reuse policy. It reads the state it is
- * given and writes only itself and the solution it is asked to solve for. Besides the
- * solution it yields what belongs to it: the linearisation point of its last assembly
- * (alpha*, u*) and the consistent reactions of the inlet, the walls and the outlet
- * (the residuals of their velocity rows, doc/theory.md "Bed and bubble analytics"), which
- * the momentum budget of monitors.csv reads.
+ * (FlowAssembler), the solve path (FlowSolvePath: the operator they assemble or give
+ * coefficients to, and its preconditioner) and the FGMRES solver with its reuse policy.
+ * It reads the state it is given and writes only itself and the solution it is asked to
+ * solve for. Besides the solution it yields what belongs to it: the linearisation point
+ * of its last assembly (alpha*, u*) and the consistent reactions of the inlet, the walls
+ * and the outlet (the residuals of their velocity rows, doc/theory.md "Bed and bubble
+ * analytics"), which the momentum budget of monitors.csv reads.
  */
 template <int dim>
 class FlowSystem
@@ -43,9 +39,9 @@ public:
               dealii::ConditionalOStream &pcout,
               dealii::TimerOutput        &timer);
 
-  /** For a new mesh (after the DoFs and constraints): the operator's sparsity, the
-   * vectors, the boundary rows of the reactions, a fresh preconditioner with the
-   * velocity near-null space of this mesh (its build counts go on). */
+  /** For a new mesh (after the DoFs and constraints): the solve path's operator and a
+   * fresh preconditioner (its build counts go on), the vectors, the boundary rows of
+   * the reactions. */
   void reinit (const dealii::Mapping<dim>              &mapping,
                const dealii::DoFHandler<dim>           &flow_dof_handler,
                const std::vector<dealii::IndexSet>     &owned,
@@ -88,47 +84,20 @@ public:
    * unconstrained cell systems of the last assembly at `solution`; collective. */
   std::array<double, 3> boundary_reactions (const BlockVector &solution) const;
 
-  /** Applies both operators to a random vector and prints their difference; and
-   * prints how far the matrix-free lifting of the inhomogeneous constraints
-   * (MatrixFreeFlowOperator::subtract_lifting on an rhs assembled without it) is from
-   * the last assembly's rhs, which carried them by local matrices. */
-  void check_operator (const FlowAssemblyState<dim>            &state,
-                       const dealii::AffineConstraints<double> &flow_constraints,
-                       const dealii::AffineConstraints<double> &schur_constraints);
-
   /** The alpha_s and the flow iterate the last assembly linearised about. */
   const AlphaVector &linearisation_alpha () const { return assembled_alpha; }
   const BlockVector &linearisation_flow () const { return assembled_flow; }
 
-  const BlockPreconditioner &block_preconditioner () const { return *preconditioner; }
   /** How often the velocity preconditioner's expensive part was built (the AMG on the
    * Q2 block, or the p-multigrid's coarse AMG and smoother). */
-  unsigned int velocity_builds () const
-  {
-    return parameters.linear_solver.p_multigrid ? multigrid.builds
-                                                : preconditioner->velocity_builds;
-  }
-  /** Whether the system matrix is assembled: for the assembled operator, the AMG on
-   * its velocity block, or the operator check; the matrix-free operator with the
-   * p-multigrid needs only the rhs and L_c. */
-  bool assembled_matrix_needed () const
-  {
-    return !parameters.linear_solver.p_multigrid ||
-           parameters.linear_solver.check_operator;
-  }
-  /** Bytes this rank holds for the flow solve, by part (ML's hierarchies are not
-   * counted: Trilinos does not report them). */
-  struct Memory
-  {
-    std::size_t op        = 0; // the system matrix, or the matrix-free data
-    std::size_t schur     = 0; // L_c
-    std::size_t multigrid = 0; // the p-multigrid's Q1 space, matrix, transfer, blocks
-    std::size_t vectors   = 0; // rhs, linearisation point
-  };
+  unsigned int velocity_builds () const { return path->velocity_builds (); }
+  using Memory = FlowSolveMemory;
   Memory memory_consumption () const;
 
   /** The operator FGMRES applies (`linear solver/operator`). */
-  const FlowOperator       &krylov_operator () const;
+  const FlowOperator &krylov_operator () const { return path->krylov_operator (); }
+  /** The solve path (`linear solver/operator`, `velocity preconditioner`). */
+  const FlowSolvePath<dim> &solve_path () const { return *path; }
   const FlowAssembler<dim> &flow_assembler () const { return *assembler; }
 
 private:
@@ -139,13 +108,9 @@ private:
   std::vector<dealii::IndexSet>       owned;
   dealii::Tensor<1, dim>              up;
   std::unique_ptr<FlowAssembler<dim>> assembler;
-  AssembledFlowOperator               op; // with the Schur mobility Laplacian
-  MatrixFreeFlowOperator<dim>         matrix_free_op;
-  VelocityMultigrid<dim>              multigrid;
-  std::unique_ptr<MatrixFreeBlockPreconditioner<dim>> multigrid_preconditioner;
-  BlockVector                                         rhs;
-  std::unique_ptr<BlockPreconditioner>                preconditioner;
-  FlowLinearSolver                                    linear_solver;
+  std::unique_ptr<FlowSolvePath<dim>> path;
+  BlockVector                         rhs;
+  FlowLinearSolver                    linear_solver;
   // the last assembly's arguments (for the coarse matrix that a rebuild after a
   // failed reused solve needs)
   struct
@@ -160,8 +125,5 @@ private:
   // unconstrained rows of the cells that hold them in the last assembly
   std::array<dealii::IndexSet, 3> boundary_velocity_dofs;
   std::vector<BoundaryCellSystem> boundary_cell_systems;
-  // without the assembled matrix: each boundary's owned velocity rows (block-0
-  // position) and weights, applied matrix-free
-  std::array<std::vector<std::pair<unsigned int, double>>, 3> reaction_weights;
 };
 } // namespace wetbed

@@ -28,16 +28,17 @@ class MatrixFreeBlockPreconditioner : public FlowPreconditioner
 public:
   using LocalVector = dealii::LinearAlgebra::distributed::Vector<double>;
 
-  /** `schur_source` holds L_c (assembled beside the system); `multigrid` is updated by
-   * the flow system with each assembly. */
-  MatrixFreeBlockPreconditioner (const LinearSolverParameters &parameters,
-                                 const AssembledFlowOperator  &schur_source,
-                                 VelocityMultigrid<dim>       &multigrid);
+  /** For the matrix-free operator `op`; `schur_source` holds L_c (assembled beside
+   * it); `multigrid` is updated with each assembly (its coefficient sink). */
+  MatrixFreeBlockPreconditioner (const LinearSolverParameters      &parameters,
+                                 const MatrixFreeFlowOperator<dim> &op,
+                                 const AssembledFlowOperator       &schur_source,
+                                 VelocityMultigrid<dim>            &multigrid);
 
-  /** From a MatrixFreeFlowOperator: the velocity multigrid's coarse AMG and smoother
-   * and the Schur hierarchy with `rebuild_velocity` (the Schur one also when it has
-   * none yet); otherwise the last ones are reused with the new node blocks. */
-  void update (const FlowOperator &op, bool rebuild_velocity) override;
+  /** The velocity multigrid's coarse AMG and smoother and the Schur hierarchy with
+   * `rebuild_velocity` (the Schur one also when it has none yet); otherwise the last
+   * ones are reused with the new node blocks. */
+  void update (bool rebuild_velocity) override;
   void vmult (BlockVector &dst, const BlockVector &src) const override;
   /** With exact inner solves: the inner velocity GMRES iterations since the last
    * report (their mean per application), else empty. */
@@ -49,7 +50,7 @@ private:
   const bool                         exact_schur, exact_velocity;
   const AssembledFlowOperator       &schur_source;
   VelocityMultigrid<dim>            &multigrid;
-  const MatrixFreeFlowOperator<dim> *op = nullptr;
+  const MatrixFreeFlowOperator<dim> *op;
   SchurPreconditioner                schur_preconditioner;
   mutable LocalVector                gradient, rhs, solution;
   mutable unsigned int               inner_iterations = 0, inner_solves = 0;

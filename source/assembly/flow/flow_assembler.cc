@@ -304,16 +304,16 @@ template <int dim>
 void FlowAssembler<dim>::assemble (const FlowAssemblyState<dim>    &state,
                                    const AffineConstraints<double> &flow_constraints,
                                    const AffineConstraints<double> &schur_constraints,
-                                   AssembledFlowOperator           &flow_operator,
+                                   const Target                    &target,
                                    BlockVector                     &rhs,
-                                   const BoundaryRowCapture        &capture,
-                                   const bool                       matrix,
-                                   const Sinks                     &sinks) const
+                                   const BoundaryRowCapture        &capture) const
 {
+  const bool   matrix = target.system != nullptr;
+  const Sinks &sinks  = target.sinks;
   if (matrix)
-    flow_operator.system = 0;
-  flow_operator.schur = 0;
-  rhs                 = 0;
+    *target.system = 0;
+  *target.schur = 0;
+  rhs           = 0;
   capture.systems->clear ();
   const auto &fe = dynamic_cast<const FESystem<dim> &> (flow_dof_handler.get_fe ());
   const FlowCellScratch<dim> scratch (
@@ -338,11 +338,11 @@ void FlowAssembler<dim>::assemble (const FlowAssemblyState<dim>    &state,
           capture_boundary_rows (c, component, capture, matrix);
         if (matrix)
           flow_constraints.distribute_local_to_global (
-              c.matrix, c.rhs, c.dofs, flow_operator.system, rhs);
+              c.matrix, c.rhs, c.dofs, *target.system, rhs);
         else
           flow_constraints.distribute_local_to_global (c.rhs, c.dofs, rhs);
         schur_constraints.distribute_local_to_global (
-            c.schur, c.pressure_dofs, flow_operator.schur);
+            c.schur, c.pressure_dofs, *target.schur);
         for (unsigned int i = 0; i < sinks.size (); ++i)
           sinks[i]->distribute (
               copy_data.cell, copy_data.coefficients, copy_data.sink_data[i]);
@@ -350,8 +350,8 @@ void FlowAssembler<dim>::assemble (const FlowAssemblyState<dim>    &state,
       scratch,
       copy);
   if (matrix)
-    flow_operator.system.compress (VectorOperation::add);
-  flow_operator.schur.compress (VectorOperation::add);
+    target.system->compress (VectorOperation::add);
+  target.schur->compress (VectorOperation::add);
   rhs.compress (VectorOperation::add);
 }
 

@@ -2,10 +2,11 @@
 
 #include <wetbed/assembly/flow/flow_coefficient_sink.h>
 #include <wetbed/assembly/flow/flow_term.h>
-#include <wetbed/solvers/assembled_flow_operator.h>
 
 #include <deal.II/base/index_set.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_block_sparse_matrix.h>
+#include <deal.II/lac/trilinos_parallel_block_vector.h>
 
 #include <memory>
 #include <vector>
@@ -17,11 +18,11 @@ namespace wetbed
  * flow system") from a list of terms, cell by cell on threads (WorkStream): for each
  * cell the fields and, once, every closure at the quadrature points (ClosureEvaluator)
  * go into the scratch, then each term adds its part to the local system, and the copier
- * distributes it into the assembled operator (the system and the Schur mobility
- * Laplacian) and the right-hand side. For the matrix-free operator the same pass also
- * evaluates the bilinear form's coefficients at the quadrature points and hands them to
- * the coefficient sinks (FlowCoefficientSink): the fields and closures of a cell are
- * evaluated once per assembly.
+ * distributes it into what the solve path asks for (a Target): the system matrix (if
+ * it has one), the Schur mobility Laplacian L_c and the right-hand side, and in the
+ * same pass the bilinear form's coefficients at the quadrature points for its
+ * coefficient sinks (FlowCoefficientSink: the matrix-free operator, the p-multigrid's
+ * coarse matrix): the fields and closures of a cell are evaluated once per assembly.
  */
 template <int dim>
 class FlowAssembler
@@ -50,22 +51,29 @@ public:
 
   using CellIterator = typename dealii::DoFHandler<dim>::active_cell_iterator;
   using Sinks        = std::vector<FlowCoefficientSink<dim> *>;
+  using Matrix       = dealii::TrilinosWrappers::BlockSparseMatrix;
 
-  /** The system (with `matrix`; without it only the rhs and L_c: the matrix-free
-   * operator applies the system and carries the inhomogeneous constraints into the rhs
-   * afterwards, MatrixFreeFlowOperator::subtract_lifting; the capture then keeps only
-   * the rhs part of the boundary rows). With `sinks`, in the same pass, the
-   * coefficients of every cell and of its boundary faces (from the same fields and
-   * closures) go to each sink: its local work on the worker threads, its distribute()
-   * in the copier. */
+  /** Where a pass writes besides the rhs. `system`: the system matrix, or none (a
+   * matrix-free operator applies the system and carries the inhomogeneous constraints
+   * into the rhs afterwards, MatrixFreeFlowOperator::subtract_lifting; the capture then
+   * keeps only the rhs part of the boundary rows). `schur`: L_c in block (1, 1).
+   * `sinks`: the coefficients of every cell and of its boundary faces (from the same
+   * fields and closures) go to each: its local work on the worker threads, its
+   * distribute() in the copier. */
+  struct Target
+  {
+    Matrix *system = nullptr;
+    Matrix *schur  = nullptr;
+    Sinks   sinks;
+  };
+
+  /** The system linearised about `state` into `target` and `rhs`. */
   void assemble (const FlowAssemblyState<dim>            &state,
                  const dealii::AffineConstraints<double> &flow_constraints,
                  const dealii::AffineConstraints<double> &schur_constraints,
-                 AssembledFlowOperator                   &flow_operator,
+                 const Target                            &target,
                  BlockVector                             &rhs,
-                 const BoundaryRowCapture                &capture,
-                 bool                                     matrix = true,
-                 const Sinks                             &sinks  = Sinks ()) const;
+                 const BoundaryRowCapture                &capture) const;
 
   /** The name of a term that contributes to the matrix but gives no coefficients (the
    * matrix-free operator cannot apply it), or an empty string. */
