@@ -42,6 +42,11 @@ def record(label, folder, log, code, wall, end):
         os.path.join(folder, "monitors.csv")) else []
     text = open(log).read() if os.path.exists(log) else ""
     values = lambda key: [float(r[key]) for r in rows]  # noqa: E731
+    # the steps the controller chose: not the start row, nor a last step cut short to
+    # land on the end time
+    steps = values("time_step")[1:] if rows else []
+    if steps and float(rows[-1]["time"]) >= end - 1e-9 and len(steps) > 1 and steps[-1] < steps[-2]:
+        steps = steps[:-1]
     result = {"label": label, "code": code, "wall": wall, "end": end,
               "reached": float(rows[-1]["time"]) if rows else 0.0,
               "steps": int(float(rows[-1]["step"])) if rows else 0,
@@ -49,7 +54,7 @@ def record(label, folder, log, code, wall, end):
               "gas": max(values("gas_speed_max")) if rows else math.nan,
               "solids": max(values("solids_speed_max")) if rows else math.nan,
               "theta": max(values("theta_max")) if rows else math.nan,
-              "dt": min(v for v in values("time_step")[1:] if v > 0) if len(rows) > 1 else math.nan,
+              "dt": min((v for v in steps if v > 0), default=math.nan),
               "checks": len(re.findall(r"step rejected at .*check:", text))}
     if code == 0:
         result["outcome"] = "completed"
