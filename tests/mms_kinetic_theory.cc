@@ -19,6 +19,7 @@
 // switch, would otherwise need a far finer mesh to be resolved).
 //
 // usage: test_mms_kinetic_theory DIM SOURCE_DIR WORK_DIR [wet]
+#include "manufactured_hook.h"
 #include "test_utilities.h"
 
 #include <wetbed/closures/drag/drag_model.h>
@@ -415,8 +416,8 @@ template <int dim>
 std::pair<std::array<double, 7>, double> run_level (const Parameters &parameters)
 {
   TwoFluidSolver<dim> solver (parameters, MPI_COMM_WORLD);
-  solver.set_manufactured_solution (
-      std::make_shared<ManufacturedKineticTheory<dim>> (parameters));
+  solver.set_verification_hook (std::make_shared<ManufacturedHook<dim>> (
+      std::make_shared<ManufacturedKineticTheory<dim>> (parameters)));
   solver.run ();
   const auto r = solver.compute_errors ();
   return {{{r.gas_velocity_l2,

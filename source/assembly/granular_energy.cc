@@ -94,8 +94,7 @@ struct GranularEnergySolver<dim>::Scratch
         a_face (face_quadrature.size ()), t_face (face_quadrature.size ()),
         us_face (face_quadrature.size ()), gas (0), solids (dim),
         wall_velocity (inputs.moving_wall_velocity),
-        manufactured_theta (inputs.manufactured &&
-                            inputs.manufactured->has_granular_temperature ())
+        imposed_sources (inputs.verification.exact_granular_temperature () != nullptr)
   {
   }
 
@@ -136,9 +135,9 @@ struct GranularEnergySolver<dim>::Scratch
   std::vector<double>                  a_face, t_face;
   std::vector<Tensor<1, dim>>          us_face;
   const FEValuesExtractors::Vector     gas, solids;
-  // verification runs: the manufactured volume and boundary sources
-  const Tensor<1, dim> wall_velocity;
-  const bool           manufactured_theta;
+  const Tensor<1, dim>                 wall_velocity;
+  // verification runs with an exact Theta: its volume and boundary sources
+  const bool imposed_sources;
 };
 
 template <int dim>
@@ -222,9 +221,10 @@ void GranularEnergySolver<dim>::assemble_granular_energy_system (
       // matrix, weighted by min(1, Pe_h). On Q1 hexahedra the Laplacian's entries
       // between edge neighbours are zero (positive on distorted cells), so the full
       // d_ij is O(rho |u| h^2) however fine the mesh: a first-order error (measured:
-      // Theta converged at rate 1.0 in the 3D manufactured solution). Weighted by Pe_h
-      // it is O(h^2) where the conduction resolves the convection and the full
-      // upwinding (an M-matrix) where it does not (the dilute freeboard, coarse beds).
+      // Theta converged at rate 1.0 in the 3D verification run, doc/verification.md).
+      // Weighted by Pe_h it is O(h^2) where the conduction resolves the convection and
+      // the full upwinding (an M-matrix) where it does not (the dilute freeboard, coarse
+      // beds).
       const double upwinding = std::min (1.0, peclet);
       upwind_cell_matrix (scratch.cell_matrix, upwinding);
       assemble_granular_energy_boundary_terms (
@@ -281,8 +281,8 @@ double GranularEnergySolver<dim>::assemble_granular_energy_volume_terms (
     const double history =
         -(inputs.bdf.a1 * scratch.t_old[q] + inputs.bdf.a2 * scratch.t_old2[q]) /
         inputs.dt;
-    const double source = scratch.manufactured_theta
-                              ? inputs.manufactured->granular_energy_source (
+    const double source = scratch.imposed_sources
+                              ? inputs.verification.granular_energy_source (
                                     theta_values.quadrature_point (q))
                               : 0.0;
     budget.production += heating * JxW;
@@ -332,13 +332,13 @@ void GranularEnergySolver<dim>::assemble_granular_energy_boundary_terms (
         inputs.boundaries.is (face->boundary_id (), BoundaryType::moving_wall)
             ? scratch.wall_velocity
             : Tensor<1, dim> ();
-    if (scratch.manufactured_theta)
+    if (scratch.imposed_sources)
     {
       theta_face.reinit (cell, face);
       flow_face.reinit (flow_cell, face);
       for (unsigned int q = 0; q < face_quadrature.size (); ++q)
       {
-        const double flux = inputs.manufactured->granular_energy_boundary_source (
+        const double flux = inputs.verification.granular_energy_boundary_source (
             theta_face.quadrature_point (q), flow_face.normal_vector (q), wall_face);
         for (unsigned int i = 0; i < n; ++i)
           cell_rhs (i) += flux * theta_face.shape_value (i, q) * theta_face.JxW (q);

@@ -34,8 +34,8 @@ void interpolate_on (const Mapping<dim>                 &mapping,
  * Constraints of the flow system at time `at_time`: hanging nodes; slip walls (strong
  * no-normal-flux unless Nitsche imposes it in the assembly) or no-slip walls; a held
  * solids velocity; the inlet gas velocity U(t)/alpha_g against gravity with solids held
- * at the distributor and retained at the outlet; with a manufactured solution its exact
- * velocities. And the Schur preconditioner's pressure pinned on the outlet.
+ * at the distributor and retained at the outlet; in a verification run the exact
+ * velocities of its hook. And the Schur preconditioner's pressure pinned on the outlet.
  */
 template <int dim>
 void TwoFluidSolver<dim>::make_flow_constraints (const double at_time)
@@ -46,22 +46,22 @@ void TwoFluidSolver<dim>::make_flow_constraints (const double at_time)
   const ComponentMask solids_mask =
       flow_fe.component_mask (FEValuesExtractors::Vector (dim));
 
-  if (manufactured)
-    manufactured->set_time (at_time); // the step's exact boundary values and sources
+  verification->set_time (at_time); // the step's exact boundary values and sources
   flow_constraints.clear ();
   flow_constraints.reinit (relevant);
   make_mesh_constraints (flow_dof_handler, flow_constraints);
 
-  if (manufactured && manufactured->slip_walls ())
+  const Function<dim> *exact_flow = verification->exact_flow ();
+  if (exact_flow && verification->walls_keep_conditions ())
     constrain_walls ();
-  if (manufactured)
+  if (exact_flow)
   {
-    // verification: exact velocities on the inlet and (unless they slip) the walls,
-    // traction on the outlet
-    const ManufacturedFlowFunction<dim> exact (*manufactured);
-    ComponentMask                       velocities (2 * dim + 1, true);
+    // verification: exact velocities on the inlet and (unless the walls keep their
+    // conditions) the walls, traction on the outlet
+    const Function<dim> &exact = *exact_flow;
+    ComponentMask        velocities (2 * dim + 1, true);
     velocities.set (2 * dim, false);
-    if (!manufactured->slip_walls ())
+    if (!verification->walls_keep_conditions ())
       interpolate_on (mapping,
                       flow_dof_handler,
                       ids.ids (BoundaryType::wall),

@@ -123,11 +123,11 @@ TwoFluidSolver<dim>::~TwoFluidSolver ()
 }
 
 template <int dim>
-void TwoFluidSolver<dim>::set_manufactured_solution (
-    std::shared_ptr<ManufacturedSolution<dim>> m)
+void TwoFluidSolver<dim>::set_verification_hook (
+    std::shared_ptr<VerificationHook<dim>> hook)
 {
-  manufactured = m;
-  flow_system.set_assembler (nullptr); // the manufactured sources join the terms
+  verification = std::move (hook);
+  flow_system.set_assembler (nullptr); // the hook's sources join the terms
 }
 
 template <int dim>
@@ -332,8 +332,7 @@ void TwoFluidSolver<dim>::set_initial_state ()
 {
   const auto          &ic = parameters.initial;
   const Tensor<1, dim> up = upward_direction<dim> (parameters.physical.gravity);
-  if (manufactured)
-    manufactured->set_time (time);
+  verification->set_time (time);
 
   // solids fraction at the vertices (Q1 nodes)
   const Point<dim>                       origin;
@@ -379,8 +378,8 @@ void TwoFluidSolver<dim>::set_initial_state ()
       {
         const Point<dim> x = cell->vertex (v);
         double           value;
-        if (manufactured)
-          value = manufactured->solids_fraction (x);
+        if (const Function<dim> *held = verification->held_solids_fraction ())
+          value = held->value (x);
         else
         {
           const double height = (x - origin) * up;
@@ -401,22 +400,17 @@ void TwoFluidSolver<dim>::set_initial_state ()
   alpha_old  = alpha;
   alpha_old2 = alpha;
   theta      = kinetic_theory ? parameters.kinetic_theory.initial_temperature : 0.0;
-  if (kinetic_theory && manufactured && manufactured->has_granular_temperature ())
-    VectorTools::interpolate (mapping,
-                              alpha_dof_handler,
-                              ManufacturedTemperatureFunction<dim> (*manufactured),
-                              theta);
+  const Function<dim> *exact_theta = verification->exact_granular_temperature ();
+  if (kinetic_theory && exact_theta)
+    VectorTools::interpolate (mapping, alpha_dof_handler, *exact_theta, theta);
   theta.update_ghost_values ();
   theta_old  = theta;
   theta_old2 = theta;
   make_flow_constraints (0.0); // the inlet gas velocity depends on alpha_s
 
   TrilinosWrappers::MPI::BlockVector owned_flow (flow_owned, communicator);
-  if (manufactured)
-    VectorTools::interpolate (mapping,
-                              flow_dof_handler,
-                              ManufacturedFlowFunction<dim> (*manufactured),
-                              owned_flow);
+  if (const Function<dim> *exact = verification->exact_flow ())
+    VectorTools::interpolate (mapping, flow_dof_handler, *exact, owned_flow);
   else if (ic.gas_at_inlet_velocity)
   {
     // u_g = U/alpha_g (the superficial velocity carried by the local gas fraction)
@@ -502,8 +496,9 @@ bool TwoFluidSolver<dim>::try_time_step (const double dt, const unsigned int bdf
   // doc/theory.md "Outer iterations": with an outer tolerance, each iteration after the
   // first tests the flow system re-assembled at the latest iterate before solving it,
   // and each flow solve is inexact (a forcing term of that tolerance)
-  const auto &ts       = parameters.time;
-  const bool  adaptive = ts.outer_tolerance > 0 && !manufactured;
+  const auto &ts = parameters.time;
+  const bool  adaptive =
+      ts.outer_tolerance > 0 && !verification->runs_all_outer_iterations ();
   AlphaVector alpha_iterate; // alpha_s before the last transport (from k = 1)
   double      alpha_change  = std::numeric_limits<double>::max ();
   double      step_residual = 0; // |b - A x^n| / |b| at the first iteration
@@ -545,11 +540,11 @@ bool TwoFluidSolver<dim>::try_time_step (const double dt, const unsigned int bdf
       return false;
     }
     last_krylov_iterations += iterations;
-    if (manufactured)
+    if (verification->held_solids_fraction ())
     {
       // verification: alpha_s stays the exact field; Theta is solved for where it is
-      // manufactured too
-      if (kinetic_theory && manufactured->has_granular_temperature () &&
+      // exact too
+      if (kinetic_theory && verification->exact_granular_temperature () &&
           !update_granular_temperature (bdf, dt))
       {
         return false;
@@ -592,7 +587,7 @@ bool TwoFluidSolver<dim>::update_granular_temperature (const BDFCoefficients &bd
                                          theta_old2,
                                          closure_evaluator,
                                          *kinetic_theory,
-                                         manufactured.get (),
+                                         *verification,
                                          bdf,
                                          dt};
   return granular_energy.update (inputs, theta, solve_history, rejection_reason);
@@ -678,7 +673,7 @@ void TwoFluidSolver<dim>::assemble_flow_system (const BDFCoefficients &bdf,
                                                          boundaries,
                                                          wall_conditions,
                                                          moving_wall_velocity (),
-                                                         manufactured));
+                                                         verification));
   const FlowAssemblyState<dim> state{bdf,
                                      dt,
                                      &flow_solution,
@@ -1000,7 +995,7 @@ void TwoFluidSolver<dim>::report_cost (const RunClock &clock) const
         << static_cast<double> (outer_iterations_run) /
                std::max (1u, step_number - first_step)
         << " per step";
-  if (ts.outer_tolerance > 0 && !manufactured)
+  if (ts.outer_tolerance > 0 && !verification->runs_all_outer_iterations ())
     pcout << " (" << unconverged_steps << " steps used all " << ts.outer_iterations
           << ", their last iterate not tested)";
   pcout << std::endl;

@@ -4,9 +4,9 @@
 #include <wetbed/boundary_conditions/wall_conditions.h>
 #include <wetbed/closures/closure_evaluator.h>
 #include <wetbed/closures/kinetic_theory/kinetic_theory.h>
-#include <wetbed/core/manufactured_solution.h>
 #include <wetbed/core/parameters.h>
 #include <wetbed/core/time_integration.h>
+#include <wetbed/core/verification_hook.h>
 #include <wetbed/mesh/boundaries.h>
 #include <wetbed/solvers/solve_history.h>
 
@@ -53,10 +53,10 @@ struct GranularEnergyInputs
   const BlockVector &flow_solution;
   const AlphaVector &theta_old, &theta_old2;
 
-  // the models; the manufactured solution of a verification run (else null)
+  // the models; what a verification run imposes (nothing in a production run)
   const closures::ClosureEvaluator &closures;
   const closures::KineticTheory    &kinetic_theory;
-  const ManufacturedSolution<dim>  *manufactured;
+  const VerificationHook<dim>      &verification;
 
   // the time step
   BDFCoefficients bdf;
@@ -119,7 +119,7 @@ private:
                                                 const CellIterator              &cell,
                                                 Scratch                         &scratch,
                                                 GranularEnergyBudget &budget) const;
-  /** PDE model, one cell's manufactured boundary flux and Johnson-Jackson wall terms. */
+  /** PDE model, one cell's imposed boundary flux and Johnson-Jackson wall terms. */
   void assemble_granular_energy_boundary_terms (const GranularEnergyInputs<dim> &inputs,
                                                 const AlphaVector               &theta,
                                                 const CellIterator              &cell,

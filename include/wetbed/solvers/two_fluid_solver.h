@@ -7,9 +7,9 @@
 #include <wetbed/closures/drag/drag_model.h>
 #include <wetbed/closures/kinetic_theory/kinetic_theory.h>
 #include <wetbed/closures/solids_stress/solids_stress_model.h>
-#include <wetbed/core/manufactured_solution.h>
 #include <wetbed/core/parameters.h>
 #include <wetbed/core/time_integration.h>
+#include <wetbed/core/verification_hook.h>
 #include <wetbed/mesh/cell_weights.h>
 #include <wetbed/mesh/mesh_input.h>
 #include <wetbed/mesh/partition_independent_triangulation.h>
@@ -68,8 +68,9 @@ public:
   TwoFluidSolver (const Parameters &parameters, MPI_Comm communicator);
   ~TwoFluidSolver ();
 
-  /** Attach a manufactured solution (verification runs only) before run(). */
-  void set_manufactured_solution (std::shared_ptr<ManufacturedSolution<dim>> mms);
+  /** What a verification run imposes (tests/), registered before run(); a production
+   * run keeps the base VerificationHook, which imposes nothing. */
+  void set_verification_hook (std::shared_ptr<VerificationHook<dim>> hook);
 
   enum class RunEnd
   {
@@ -91,8 +92,8 @@ public:
   /** Advances one accepted time step (retrying smaller steps as needed). */
   void advance ();
 
-  /** Errors of u_g, u_s (L2 and H1 seminorm), p' (L2) and, where manufactured, Theta
-   * (L2 and H1 seminorm; else 0) against the manufactured solution. */
+  /** Errors of u_g, u_s (L2 and H1 seminorm), p' (L2) and, where the verification hook
+   * has an exact one, Theta (L2 and H1 seminorm; else 0) against its exact fields. */
   struct Errors
   {
     double gas_velocity_l2, gas_velocity_h1, solids_velocity_l2, solids_velocity_h1,
@@ -290,7 +291,8 @@ private:
   closures::GasParticleProperties              gas_particle;
   closures::ClosureEvaluator                   closure_evaluator;
   dealii::FunctionParser<3> held_velocity_function{3}; // u_s(x, y, z, t) where held
-  std::shared_ptr<ManufacturedSolution<dim>> manufactured;
+  std::shared_ptr<VerificationHook<dim>> verification =
+      std::make_shared<VerificationHook<dim>> ();
 
   // the alpha_s transport and compaction correction, its operators and the momentum
   // its velocity correction added

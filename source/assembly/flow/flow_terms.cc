@@ -2,8 +2,8 @@
 #include <wetbed/assembly/flow/convection_term.h>
 #include <wetbed/assembly/flow/drag_coupling_term.h>
 #include <wetbed/assembly/flow/flow_terms.h>
+#include <wetbed/assembly/flow/imposed_source_term.h>
 #include <wetbed/assembly/flow/inertia_term.h>
-#include <wetbed/assembly/flow/manufactured_source_term.h>
 #include <wetbed/assembly/flow/nitsche_wall_term.h>
 #include <wetbed/assembly/flow/outlet_backflow_term.h>
 #include <wetbed/assembly/flow/pressure_coupling_term.h>
@@ -34,12 +34,12 @@ void add_flow_terms (FlowAssembler<dim> &assembler, const FlowTermContext<dim> &
   // the walls: each phase's friction, and no penetration by Nitsche where it slips
   const WallConditions &walls = context.walls;
   const auto friction         = [] (const WallCondition &c) { return c.has_friction (); };
-  if (context.slip_walls &&
+  if (context.wall_conditions &&
       (walls.any (Phase::gas, friction) || walls.any (Phase::solids, friction)))
     assembler.add_term (std::make_unique<WallFrictionTerm<dim>> (
         walls, id.ids (BoundaryType::moving_wall), context.moving_wall_velocity));
   std::map<dealii::types::boundary_id, std::array<bool, 2>> weak;
-  if (context.slip_walls && bc.nitsche)
+  if (context.wall_conditions && bc.nitsche)
     for (const auto wall : id.walls ())
     {
       const std::array<bool, 2> slips = {
@@ -61,15 +61,15 @@ void add_flow_terms (FlowAssembler<dim> &assembler, const FlowTermContext<dim> &
 
 template <int dim>
 std::unique_ptr<FlowAssembler<dim>>
-make_flow_assembler (const Parameters                 &parameters,
-                     const dealii::Mapping<dim>       &mapping,
-                     const dealii::DoFHandler<dim>    &flow_dof_handler,
-                     const dealii::DoFHandler<dim>    &alpha_dof_handler,
-                     const closures::ClosureEvaluator &closures,
-                     const Boundaries                 &boundaries,
-                     const WallConditions             &walls,
-                     const dealii::Tensor<1, dim>     &moving_wall_velocity,
-                     std::shared_ptr<const ManufacturedSolution<dim>> manufactured)
+make_flow_assembler (const Parameters                            &parameters,
+                     const dealii::Mapping<dim>                  &mapping,
+                     const dealii::DoFHandler<dim>               &flow_dof_handler,
+                     const dealii::DoFHandler<dim>               &alpha_dof_handler,
+                     const closures::ClosureEvaluator            &closures,
+                     const Boundaries                            &boundaries,
+                     const WallConditions                        &walls,
+                     const dealii::Tensor<1, dim>                &moving_wall_velocity,
+                     std::shared_ptr<const VerificationHook<dim>> verification)
 {
   const auto       &pp = parameters.physical;
   FlowMaterial<dim> material{pp.gas_density,
@@ -88,13 +88,13 @@ make_flow_assembler (const Parameters                 &parameters,
                                      material,
                                      moving_wall_velocity,
                                      flow_dof_handler.get_fe ().degree,
-                                     !manufactured || manufactured->slip_walls ()};
+                                     verification->walls_keep_conditions ()};
   add_flow_terms (*assembler, context);
-  if (manufactured)
-    assembler->add_term (std::make_unique<ManufacturedSourceTerm<dim>> (
-        manufactured,
-        boundaries.ids (BoundaryType::outlet),
-        boundaries.ids (BoundaryType::wall)));
+  if (verification->has_flow_sources ())
+    assembler->add_term (
+        std::make_unique<ImposedSourceTerm<dim>> (verification,
+                                                  boundaries.ids (BoundaryType::outlet),
+                                                  boundaries.ids (BoundaryType::wall)));
   return assembler;
 }
 
@@ -109,7 +109,7 @@ make_flow_assembler (const Parameters &,
                      const Boundaries &,
                      const WallConditions &,
                      const dealii::Tensor<1, 2> &,
-                     std::shared_ptr<const ManufacturedSolution<2>>);
+                     std::shared_ptr<const VerificationHook<2>>);
 template std::unique_ptr<FlowAssembler<3>>
 make_flow_assembler (const Parameters &,
                      const dealii::Mapping<3> &,
@@ -119,5 +119,5 @@ make_flow_assembler (const Parameters &,
                      const Boundaries &,
                      const WallConditions &,
                      const dealii::Tensor<1, 3> &,
-                     std::shared_ptr<const ManufacturedSolution<3>>);
+                     std::shared_ptr<const VerificationHook<3>>);
 } // namespace wetbed

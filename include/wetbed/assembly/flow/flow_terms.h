@@ -2,8 +2,8 @@
 
 #include <wetbed/assembly/flow/flow_assembler.h>
 #include <wetbed/boundary_conditions/wall_conditions.h>
-#include <wetbed/core/manufactured_solution.h>
 #include <wetbed/core/parameters.h>
+#include <wetbed/core/verification_hook.h>
 #include <wetbed/mesh/mesh_input.h>
 
 #include <memory>
@@ -21,8 +21,9 @@ struct FlowTermContext
   FlowMaterial<dim>                 material;
   dealii::Tensor<1, dim>            moving_wall_velocity;
   unsigned int                      velocity_degree;
-  // verification runs keep the wall conditions only with slip walls (else exact values)
-  bool slip_walls = true;
+  // false: a verification run imposes exact velocities on the walls instead of their
+  // conditions (VerificationHook::walls_keep_conditions)
+  bool wall_conditions = true;
 };
 
 /**
@@ -38,18 +39,17 @@ void add_flow_terms (FlowAssembler<dim> &assembler, const FlowTermContext<dim> &
 
 /**
  * The flow assembler of a case: the material of `physical`, the terms of add_flow_terms
- * and, for a verification run (`manufactured` not null), the manufactured solution's
- * sources.
+ * and the sources `verification` imposes (none in a production run).
  */
 template <int dim>
 std::unique_ptr<FlowAssembler<dim>>
-make_flow_assembler (const Parameters                 &parameters,
-                     const dealii::Mapping<dim>       &mapping,
-                     const dealii::DoFHandler<dim>    &flow_dof_handler,
-                     const dealii::DoFHandler<dim>    &alpha_dof_handler,
-                     const closures::ClosureEvaluator &closures,
-                     const Boundaries                 &boundaries,
-                     const WallConditions             &walls,
-                     const dealii::Tensor<1, dim>     &moving_wall_velocity,
-                     std::shared_ptr<const ManufacturedSolution<dim>> manufactured);
+make_flow_assembler (const Parameters                            &parameters,
+                     const dealii::Mapping<dim>                  &mapping,
+                     const dealii::DoFHandler<dim>               &flow_dof_handler,
+                     const dealii::DoFHandler<dim>               &alpha_dof_handler,
+                     const closures::ClosureEvaluator            &closures,
+                     const Boundaries                            &boundaries,
+                     const WallConditions                        &walls,
+                     const dealii::Tensor<1, dim>                &moving_wall_velocity,
+                     std::shared_ptr<const VerificationHook<dim>> verification);
 } // namespace wetbed

@@ -1,19 +1,19 @@
-#include <wetbed/assembly/flow/manufactured_source_term.h>
+#include <wetbed/assembly/flow/imposed_source_term.h>
 
 namespace wetbed
 {
 template <int dim>
-void ManufacturedSourceTerm<dim>::cell (const FlowCellScratch<dim> &s,
-                                        const FlowAssemblyState<dim> &,
-                                        FlowCellCopy &copy) const
+void ImposedSourceTerm<dim>::cell (const FlowCellScratch<dim> &s,
+                                   const FlowAssemblyState<dim> &,
+                                   FlowCellCopy &copy) const
 {
   const unsigned int n_u = s.indices.n_velocity_basis, n_p = s.indices.n_pressure_basis;
   for (unsigned int q = 0; q < s.JxW.size (); ++q)
   {
     const dealii::Point<dim>    &x        = s.velocity_values.quadrature_point (q);
-    const dealii::Tensor<1, dim> force[2] = {solution->gas_momentum_source (x),
-                                             solution->solids_momentum_source (x)};
-    const double volume_source = solution->mixture_volume_source (x) * s.JxW[q];
+    const dealii::Tensor<1, dim> force[2] = {hook->momentum_source (x, 0),
+                                             hook->momentum_source (x, 1)};
+    const double volume_source            = hook->mixture_volume_source (x) * s.JxW[q];
     for (unsigned int c = 0; c < 2 * dim; ++c)
       for (unsigned int a = 0; a < n_u; ++a)
         copy.rhs (s.indices.velocity[c][a]) +=
@@ -24,11 +24,11 @@ void ManufacturedSourceTerm<dim>::cell (const FlowCellScratch<dim> &s,
 }
 
 template <int dim>
-void ManufacturedSourceTerm<dim>::face (const typename FlowTerm<dim>::CellIterator &cell,
-                                        const unsigned int          face_number,
-                                        const FlowCellScratch<dim> &s,
-                                        const FlowAssemblyState<dim> &,
-                                        FlowCellCopy &copy) const
+void ImposedSourceTerm<dim>::face (const typename FlowTerm<dim>::CellIterator &cell,
+                                   const unsigned int          face_number,
+                                   const FlowCellScratch<dim> &s,
+                                   const FlowAssemblyState<dim> &,
+                                   FlowCellCopy &copy) const
 {
   const auto        &fv  = s.face_values;
   const unsigned int n_u = s.indices.n_velocity_basis;
@@ -39,9 +39,8 @@ void ManufacturedSourceTerm<dim>::face (const typename FlowTerm<dim>::CellIterat
     const dealii::Tensor<1, dim> n = fv.normal_vector (q);
     dealii::Tensor<1, dim>       traction[2];
     for (unsigned int k = 0; k < 2; ++k)
-      traction[k] = on_out ? (k == 0 ? solution->gas_traction (x, n)
-                                     : solution->solids_traction (x, n))
-                           : solution->wall_traction_source (x, n, k);
+      traction[k] =
+          on_out ? hook->outlet_traction (x, n, k) : hook->wall_traction_source (x, n, k);
     for (unsigned int c = 0; c < 2 * dim; ++c)
       for (unsigned int a = 0; a < n_u; ++a)
         copy.rhs (s.indices.velocity[c][a]) +=
@@ -50,6 +49,6 @@ void ManufacturedSourceTerm<dim>::face (const typename FlowTerm<dim>::CellIterat
   }
 }
 
-template class ManufacturedSourceTerm<2>;
-template class ManufacturedSourceTerm<3>;
+template class ImposedSourceTerm<2>;
+template class ImposedSourceTerm<3>;
 } // namespace wetbed

@@ -1,8 +1,14 @@
 #pragma once
 
+// The manufactured solutions of the MMS tests and the verification hook that imposes
+// them on the solver (doc/verification.md).
+#include <wetbed/core/verification_hook.h>
+
 #include <deal.II/base/function.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
+
+#include <memory>
 
 namespace wetbed
 {
@@ -26,8 +32,8 @@ dealii::Tensor<1, dim> central_difference_gradient (const Field              &f,
 
 /**
  * Source terms a verification run adds to the equations, and the exact fields it
- * imposes on the boundary and compares against. The solver calls these only when a
- * manufactured solution is attached (tests/), never in a production run.
+ * imposes on the boundary and compares against; ManufacturedHook hands them to the
+ * solver.
  *
  * A time-dependent solution reads time(): the solver sets it to the time the step
  * solves for (t^{n+1}) before it builds the step's constraints and sources, to 0 for
@@ -155,5 +161,86 @@ public:
 
 private:
   const ManufacturedSolution<dim> &m;
+};
+/** The manufactured alpha_s as a deal.II Function (imposed and held). */
+template <int dim>
+class ManufacturedFractionFunction : public dealii::Function<dim>
+{
+public:
+  explicit ManufacturedFractionFunction (const ManufacturedSolution<dim> &m) : m (m) {}
+  double value (const dealii::Point<dim> &x, const unsigned int = 0) const override
+  {
+    return m.solids_fraction (x);
+  }
+
+private:
+  const ManufacturedSolution<dim> &m;
+};
+
+/**
+ * A manufactured solution as the solver's verification hook: its fields imposed
+ * initially and on the boundary, alpha_s held, Theta solved where it is manufactured,
+ * its sources added, every outer iteration run.
+ */
+template <int dim>
+class ManufacturedHook : public VerificationHook<dim>
+{
+public:
+  explicit ManufacturedHook (std::shared_ptr<ManufacturedSolution<dim>> solution)
+      : solution (std::move (solution)), flow (*this->solution),
+        fraction (*this->solution), theta (*this->solution)
+  {
+  }
+  void set_time (const double t) override { solution->set_time (t); }
+  const dealii::Function<dim> *exact_flow () const override { return &flow; }
+  bool walls_keep_conditions () const override { return solution->slip_walls (); }
+  const dealii::Function<dim> *held_solids_fraction () const override
+  {
+    return &fraction;
+  }
+  const dealii::Function<dim> *exact_granular_temperature () const override
+  {
+    return solution->has_granular_temperature () ? &theta : nullptr;
+  }
+  bool                   runs_all_outer_iterations () const override { return true; }
+  bool                   has_flow_sources () const override { return true; }
+  dealii::Tensor<1, dim> momentum_source (const dealii::Point<dim> &x,
+                                          const unsigned int        phase) const override
+  {
+    return phase == 0 ? solution->gas_momentum_source (x)
+                      : solution->solids_momentum_source (x);
+  }
+  double mixture_volume_source (const dealii::Point<dim> &x) const override
+  {
+    return solution->mixture_volume_source (x);
+  }
+  dealii::Tensor<1, dim> outlet_traction (const dealii::Point<dim>     &x,
+                                          const dealii::Tensor<1, dim> &n,
+                                          const unsigned int phase) const override
+  {
+    return phase == 0 ? solution->gas_traction (x, n) : solution->solids_traction (x, n);
+  }
+  dealii::Tensor<1, dim> wall_traction_source (const dealii::Point<dim>     &x,
+                                               const dealii::Tensor<1, dim> &n,
+                                               const unsigned int phase) const override
+  {
+    return solution->wall_traction_source (x, n, phase);
+  }
+  double granular_energy_source (const dealii::Point<dim> &x) const override
+  {
+    return solution->granular_energy_source (x);
+  }
+  double granular_energy_boundary_source (const dealii::Point<dim>     &x,
+                                          const dealii::Tensor<1, dim> &n,
+                                          const bool jj_wall) const override
+  {
+    return solution->granular_energy_boundary_source (x, n, jj_wall);
+  }
+
+private:
+  std::shared_ptr<ManufacturedSolution<dim>> solution;
+  ManufacturedFlowFunction<dim>              flow;
+  ManufacturedFractionFunction<dim>          fraction;
+  ManufacturedTemperatureFunction<dim>       theta;
 };
 } // namespace wetbed
