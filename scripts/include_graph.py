@@ -2,7 +2,7 @@
 """The include graph of wetbed's folders: how many #include <wetbed/B/...> lines each
 folder A of source/ and include/wetbed/ has (A -> B), and every include that points up
 the layer order core < closures < mesh < boundary_conditions < assembly < solvers <
-postprocess, with the files that make it. Exit status 0; a text report on stdout.
+postprocess < command_line, with the files that make it. Exit status 0; a text report on stdout.
 
 usage: python3 scripts/include_graph.py [--dot FILE]   (FILE: Graphviz, one edge a line)"""
 import argparse
@@ -10,7 +10,8 @@ import collections
 import os
 import re
 
-LAYERS = ["core", "closures", "mesh", "boundary_conditions", "assembly", "solvers", "postprocess"]
+LAYERS = ["core", "closures", "mesh", "boundary_conditions", "assembly", "solvers", "postprocess",
+          "command_line"]
 root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 parser = argparse.ArgumentParser()
 parser.add_argument("--dot", help="also write the folder graph in Graphviz form")

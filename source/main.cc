@@ -1,4 +1,4 @@
-#include <wetbed/core/application.h>
+#include <wetbed/command_line/application.h>
 
 #include <deal.II/base/mpi.h>
 

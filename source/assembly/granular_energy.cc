@@ -1,5 +1,5 @@
+#include <wetbed/assembly/granular_energy.h>
 #include <wetbed/closures/kinetic_theory/collisional_terms.h>
-#include <wetbed/solvers/granular_energy_solver.h>
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
@@ -67,7 +67,7 @@ void upwind_cell_matrix (FullMatrix<double> &cell_matrix, const double upwinding
  * of the case.
  */
 template <int dim>
-struct GranularEnergySolver<dim>::Scratch
+struct GranularEnergyAssembler<dim>::Scratch
 {
   using CellIterator = typename DoFHandler<dim>::active_cell_iterator;
 
@@ -141,7 +141,14 @@ struct GranularEnergySolver<dim>::Scratch
 };
 
 template <int dim>
-void GranularEnergySolver<dim>::project_algebraic_granular_temperature (
+GranularEnergyAssembler<dim>::GranularEnergyAssembler (const Parameters &parameters,
+                                                       MPI_Comm          communicator)
+    : parameters (parameters), communicator (communicator)
+{
+}
+
+template <int dim>
+void GranularEnergyAssembler<dim>::project_algebraic (
     const GranularEnergyInputs<dim> &inputs,
     const AlphaVector               &theta,
     TrilinosWrappers::MPI::Vector   &solution,
@@ -200,11 +207,11 @@ void GranularEnergySolver<dim>::project_algebraic_granular_temperature (
 }
 
 template <int dim>
-void GranularEnergySolver<dim>::assemble_granular_energy_system (
-    const GranularEnergyInputs<dim> &inputs,
-    const AlphaVector               &theta,
-    TrilinosWrappers::MPI::Vector   &rhs,
-    GranularEnergyBudget            &budget)
+void GranularEnergyAssembler<dim>::assemble (const GranularEnergyInputs<dim> &inputs,
+                                             const AlphaVector               &theta,
+                                             TrilinosWrappers::SparseMatrix  &matrix,
+                                             TrilinosWrappers::MPI::Vector   &rhs,
+                                             GranularEnergyBudget &budget) const
 {
   Scratch scratch (inputs);
   matrix = 0;
@@ -215,8 +222,7 @@ void GranularEnergySolver<dim>::assemble_granular_energy_system (
     if (cell->is_locally_owned ())
     {
       scratch.reinit (inputs, theta, cell, flow_cell);
-      const double peclet =
-          assemble_granular_energy_volume_terms (inputs, cell, scratch, budget);
+      const double peclet = volume_terms (inputs, cell, scratch, budget);
       // discrete upwinding: d_ij = max(0, a_ij, a_ji) of the convection-diffusion
       // matrix, weighted by min(1, Pe_h). On Q1 hexahedra the Laplacian's entries
       // between edge neighbours are zero (positive on distorted cells), so the full
@@ -227,8 +233,7 @@ void GranularEnergySolver<dim>::assemble_granular_energy_system (
       // beds).
       const double upwinding = std::min (1.0, peclet);
       upwind_cell_matrix (scratch.cell_matrix, upwinding);
-      assemble_granular_energy_boundary_terms (
-          inputs, theta, cell, flow_cell, scratch, budget);
+      boundary_terms (inputs, theta, cell, flow_cell, scratch, budget);
       inputs.alpha_constraints.distribute_local_to_global (
           scratch.cell_matrix, scratch.dofs, matrix);
       inputs.alpha_constraints.distribute_local_to_global (
@@ -241,11 +246,11 @@ void GranularEnergySolver<dim>::assemble_granular_energy_system (
 }
 
 template <int dim>
-double GranularEnergySolver<dim>::assemble_granular_energy_volume_terms (
-    const GranularEnergyInputs<dim> &inputs,
-    const CellIterator              &cell,
-    Scratch                         &scratch,
-    GranularEnergyBudget            &budget) const
+double
+GranularEnergyAssembler<dim>::volume_terms (const GranularEnergyInputs<dim> &inputs,
+                                            const CellIterator              &cell,
+                                            Scratch                         &scratch,
+                                            GranularEnergyBudget            &budget) const
 {
   const auto          &kt             = parameters.kinetic_theory;
   const double         rho_s          = parameters.physical.particle_density;
@@ -305,7 +310,7 @@ double GranularEnergySolver<dim>::assemble_granular_energy_volume_terms (
 }
 
 template <int dim>
-void GranularEnergySolver<dim>::assemble_granular_energy_boundary_terms (
+void GranularEnergyAssembler<dim>::boundary_terms (
     const GranularEnergyInputs<dim> &inputs,
     const AlphaVector               &theta,
     const CellIterator              &cell,
@@ -378,19 +383,6 @@ void GranularEnergySolver<dim>::assemble_granular_energy_boundary_terms (
   }
 }
 
-// the assembly members (the rest in source/solvers/granular_energy_solver.cc)
-#define WETBED_INSTANTIATE(dim)                                                          \
-  template void GranularEnergySolver<dim>::project_algebraic_granular_temperature (      \
-      const GranularEnergyInputs<dim> &,                                                 \
-      const AlphaVector &,                                                               \
-      TrilinosWrappers::MPI::Vector &,                                                   \
-      GranularEnergyBudget &) const;                                                     \
-  template void GranularEnergySolver<dim>::assemble_granular_energy_system (             \
-      const GranularEnergyInputs<dim> &,                                                 \
-      const AlphaVector &,                                                               \
-      TrilinosWrappers::MPI::Vector &,                                                   \
-      GranularEnergyBudget &);
-WETBED_INSTANTIATE (2)
-WETBED_INSTANTIATE (3)
-#undef WETBED_INSTANTIATE
+template class GranularEnergyAssembler<2>;
+template class GranularEnergyAssembler<3>;
 } // namespace wetbed

@@ -1,9 +1,12 @@
-#include <wetbed/solvers/interruptible_solver_control.h>
-#include <wetbed/solvers/solids_transport.h>
+#include <wetbed/assembly/solids_pressure_correction.h>
+#include <wetbed/core/interruptible_solver_control.h>
 
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/lac/trilinos_precondition.h>
 
 #include <algorithm>
@@ -45,16 +48,50 @@ using namespace dealii;
  * r ~ 5) they are damped by ~1/2 per step.
  */
 template <int dim>
-double
-SolidsTransport<dim>::compaction_stiffness (const closures::ClosureEvaluator &closures,
-                                            const double                      alpha_s,
-                                            const double alpha_m) const
+SolidsPressureCorrection<dim>::SolidsPressureCorrection (const Parameters &parameters,
+                                                         MPI_Comm          communicator,
+                                                         TimerOutput      &timer)
+    : parameters (parameters), communicator (communicator), timer (timer)
+{
+}
+
+template <int dim>
+void SolidsPressureCorrection<dim>::reinit (
+    const DoFHandler<dim>           &alpha_dof_handler,
+    const AffineConstraints<double> &alpha_constraints,
+    const AlphaVector               &layout)
+{
+  alpha_momentum.reinit (layout);
+  const IndexSet alpha_owned = alpha_dof_handler.locally_owned_dofs ();
+  const IndexSet alpha_relevant =
+      DoFTools::extract_locally_relevant_dofs (alpha_dof_handler);
+  DynamicSparsityPattern dsp (alpha_relevant);
+  DoFTools::make_sparsity_pattern (alpha_dof_handler, dsp, alpha_constraints, false);
+  SparsityTools::distribute_sparsity_pattern (
+      dsp, alpha_owned, communicator, alpha_relevant);
+  correction_matrix.reinit (alpha_owned, alpha_owned, dsp, communicator);
+  compaction_flux_matrix.reinit (alpha_owned, alpha_owned, dsp, communicator);
+}
+
+template <int dim>
+void SolidsPressureCorrection<dim>::begin (const AlphaVector &alpha)
+{
+  last_correction_momentum = 0;
+  alpha_momentum           = alpha;
+  alpha_momentum.update_ghost_values ();
+}
+
+template <int dim>
+double SolidsPressureCorrection<dim>::compaction_stiffness (
+    const closures::ClosureEvaluator &closures,
+    const double                      alpha_s,
+    const double                      alpha_m) const
 {
   return closures.compaction_slope (std::max (alpha_s, alpha_m));
 }
 
 template <int dim>
-void SolidsTransport<dim>::nodal_compaction_stiffness (
+void SolidsPressureCorrection<dim>::nodal_compaction_stiffness (
     const closures::ClosureEvaluator           &closures,
     const std::vector<types::global_dof_index> &dofs,
     const AlphaVector                          &alpha,
@@ -76,11 +113,11 @@ void SolidsTransport<dim>::nodal_compaction_stiffness (
  * alpha_s -> 0 (beta ~ alpha_s); 0 where there are no solids.
  */
 template <int dim>
-double
-SolidsTransport<dim>::compaction_mobility (const closures::ClosureEvaluator &closures,
-                                           const double                      alpha_s,
-                                           const Tensor<1, dim>             &slip,
-                                           const double                      rate) const
+double SolidsPressureCorrection<dim>::compaction_mobility (
+    const closures::ClosureEvaluator &closures,
+    const double                      alpha_s,
+    const Tensor<1, dim>             &slip,
+    const double                      rate) const
 {
   if (!(alpha_s > 0))
     return 0.0;
@@ -102,7 +139,7 @@ SolidsTransport<dim>::compaction_mobility (const closures::ClosureEvaluator &clo
 namespace
 {
 /** CG on `matrix` with `preconditioner` within `steps` iterations, recorded in
- * `history` as `name`; true when it converged. A stop signal (StepInterrupted) passes
+ * `record` as `name`; true when it converged. A stop signal (StepInterrupted) passes
  * through; a missed tolerance is rethrown where `rethrow`. */
 template <typename Preconditioner>
 bool cg_solve (MPI_Comm                              communicator,
@@ -113,7 +150,7 @@ bool cg_solve (MPI_Comm                              communicator,
                const std::pair<unsigned int, double> steps_and_tolerance,
                const std::string                    &name,
                const bool                            rethrow,
-               SolveHistory                         &history)
+               const SolveRecord                    &record)
 {
   InterruptibleSolverControl control (
       communicator, steps_and_tolerance.first, steps_and_tolerance.second);
@@ -125,20 +162,21 @@ bool cg_solve (MPI_Comm                              communicator,
   }
   catch (const SolverControl::NoConvergence &)
   {
-    history.record (name, control, false);
+    record (name, control, false);
     if (rethrow)
       throw;
     return false;
   }
-  history.record (name, control, true);
+  record (name, control, true);
   return true;
 }
 } // namespace
 
 template <int dim>
-void SolidsTransport<dim>::solve_correction (const TrilinosWrappers::MPI::Vector &rhs,
-                                             TrilinosWrappers::MPI::Vector &increment,
-                                             SolveHistory                  &history) const
+void SolidsPressureCorrection<dim>::solve_correction (
+    const TrilinosWrappers::MPI::Vector &rhs,
+    TrilinosWrappers::MPI::Vector       &increment,
+    const SolveRecord                   &record) const
 {
   const double tolerance =
       parameters.linear_solver.scalar_tolerance * rhs.l2_norm () + 1e-300;
@@ -152,7 +190,7 @@ void SolidsTransport<dim>::solve_correction (const TrilinosWrappers::MPI::Vector
                 {50, tolerance},
                 "solids-pressure correction CG (Jacobi; AMG on a miss)",
                 false,
-                history))
+                record))
     return;
   increment = 0;
   TrilinosWrappers::PreconditionAMG amg;
@@ -165,15 +203,16 @@ void SolidsTransport<dim>::solve_correction (const TrilinosWrappers::MPI::Vector
             {1000, tolerance},
             "solids-pressure correction CG (AMG)",
             true,
-            history);
+            record);
 }
 
 template <int dim>
-bool SolidsTransport<dim>::correct_solids_pressure (
+bool SolidsPressureCorrection<dim>::correct_solids_fraction (
     const SolidsTransportInputs<dim> &inputs,
     const BlockVector                &flow_solution,
     AlphaVector                      &alpha,
-    SolveHistory                     &history)
+    VolumeFractionTransport<dim>     &transport,
+    const SolveRecord                &record)
 {
   TimerOutput::Scope                scope (timer, "solids pressure correction");
   const Mapping<dim>               &mapping           = inputs.mapping;
@@ -263,7 +302,7 @@ bool SolidsTransport<dim>::correct_solids_pressure (
 
   TrilinosWrappers::MPI::Vector increment (rhs); // z
   increment = 0;
-  solve_correction (rhs, increment, history);
+  solve_correction (rhs, increment, record);
   // the nodal pressure increment w = S z becomes the limited edge fluxes
   // -dt K_ij (w_j - w_i)
   AlphaVector pressure_increment (alpha);
@@ -292,7 +331,7 @@ bool SolidsTransport<dim>::correct_solids_pressure (
  * are damped by ~1/2 per step.
  */
 template <int dim>
-void SolidsTransport<dim>::correct_solids_velocity (
+void SolidsPressureCorrection<dim>::correct_solids_velocity (
     const SolidsTransportInputs<dim> &inputs,
     const AlphaVector                &alpha,
     BlockVector                      &flow_solution)
@@ -398,6 +437,6 @@ void SolidsTransport<dim>::correct_solids_velocity (
   flow_solution = corrected;
 }
 
-template class SolidsTransport<2>;
-template class SolidsTransport<3>;
+template class SolidsPressureCorrection<2>;
+template class SolidsPressureCorrection<3>;
 } // namespace wetbed

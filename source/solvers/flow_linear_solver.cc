@@ -1,5 +1,5 @@
+#include <wetbed/core/interruptible_solver_control.h>
 #include <wetbed/solvers/flow_linear_solver.h>
-#include <wetbed/solvers/interruptible_solver_control.h>
 
 #include <deal.II/lac/solver_gmres.h>
 

@@ -1,5 +1,5 @@
+#include <wetbed/core/interruptible_solver_control.h>
 #include <wetbed/solvers/granular_energy_solver.h>
-#include <wetbed/solvers/interruptible_solver_control.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -34,7 +34,8 @@ template <int dim>
 GranularEnergySolver<dim>::GranularEnergySolver (const Parameters &parameters,
                                                  MPI_Comm          communicator,
                                                  TimerOutput      &timer)
-    : parameters (parameters), communicator (communicator), timer (timer)
+    : parameters (parameters), communicator (communicator), timer (timer),
+      assembler (parameters, communicator)
 {
 }
 
@@ -97,9 +98,9 @@ bool GranularEnergySolver<dim>::update (const GranularEnergyInputs<dim> &inputs,
       solution (rhs);
   GranularEnergyBudget budget;
   if (algebraic)
-    project_algebraic_granular_temperature (inputs, theta, solution, budget);
+    assembler.project_algebraic (inputs, theta, solution, budget);
   else
-    assemble_granular_energy_system (inputs, theta, rhs, budget);
+    assembler.assemble (inputs, theta, matrix, rhs, budget);
   last_budget = sum_over_ranks (budget, communicator);
 
   if (!algebraic &&

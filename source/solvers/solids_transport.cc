@@ -1,10 +1,7 @@
 #include <wetbed/solvers/solids_transport.h>
 
 #include <deal.II/base/quadrature_lib.h>
-#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_values.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/sparsity_tools.h>
 
 #include <iomanip>
 #include <sstream>
@@ -17,7 +14,7 @@ template <int dim>
 SolidsTransport<dim>::SolidsTransport (const Parameters &parameters,
                                        MPI_Comm          communicator,
                                        TimerOutput      &timer)
-    : parameters (parameters), communicator (communicator), timer (timer)
+    : parameters (parameters), timer (timer), correction (parameters, communicator, timer)
 {
 }
 
@@ -28,16 +25,7 @@ void SolidsTransport<dim>::reinit (const Mapping<dim>              &mapping,
                                    const AlphaVector               &layout)
 {
   transport.setup (alpha_dof_handler, mapping, alpha_constraints, layout);
-  alpha_momentum.reinit (layout);
-  const IndexSet alpha_owned = alpha_dof_handler.locally_owned_dofs ();
-  const IndexSet alpha_relevant =
-      DoFTools::extract_locally_relevant_dofs (alpha_dof_handler);
-  DynamicSparsityPattern dsp (alpha_relevant);
-  DoFTools::make_sparsity_pattern (alpha_dof_handler, dsp, alpha_constraints, false);
-  SparsityTools::distribute_sparsity_pattern (
-      dsp, alpha_owned, communicator, alpha_relevant);
-  correction_matrix.reinit (alpha_owned, alpha_owned, dsp, communicator);
-  compaction_flux_matrix.reinit (alpha_owned, alpha_owned, dsp, communicator);
+  correction.reinit (alpha_dof_handler, alpha_constraints, layout);
 }
 
 template <int dim>
@@ -47,13 +35,11 @@ bool SolidsTransport<dim>::advance (const SolidsTransportInputs<dim> &inputs,
                                     SolveHistory                     &history,
                                     std::string                      &reason)
 {
-  last_correction_momentum = 0;
   // explicit bounded transport from t_n with the midpoint of u_s^n and u_s*
   // (doc/theory.md, "One time step", step 2)
   {
     TimerOutput::Scope scope (timer, "alpha transport");
-    alpha_momentum = alpha;
-    alpha_momentum.update_ghost_values ();
+    correction.begin (alpha);
     const FEValuesExtractors::Vector solids (dim);
     // the transport integrates with QGauss(3) on the alpha cell; the same points on
     // the flow cell of the same triangulation cell give u_s there
@@ -96,8 +82,13 @@ bool SolidsTransport<dim>::advance (const SolidsTransportInputs<dim> &inputs,
   }
   // implicit solids-pressure correction of alpha_s, then of u_s with the same
   // compaction response, so that velocity and packing stay consistent (steps 3-4)
-  if (correct_solids_pressure (inputs, flow_solution, alpha, history))
-    correct_solids_velocity (inputs, alpha, flow_solution);
+  const SolveRecord record = [&] (const std::string           &solver,
+                                  const dealii::SolverControl &control,
+                                  const bool                   converged)
+  { history.record (solver, control, converged); };
+  if (correction.correct_solids_fraction (
+          inputs, flow_solution, alpha, transport, record))
+    correction.correct_solids_velocity (inputs, alpha, flow_solution);
   return true;
 }
 

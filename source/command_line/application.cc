@@ -1,4 +1,4 @@
-#include <wetbed/core/application.h>
+#include <wetbed/command_line/application.h>
 #include <wetbed/core/input_error.h>
 #include <wetbed/core/output_folder.h>
 #include <wetbed/core/parameters.h>
