@@ -303,6 +303,17 @@ bool SolidsPressureCorrection<dim>::correct_solids_fraction (
   TrilinosWrappers::MPI::Vector increment (rhs); // z
   increment = 0;
   solve_correction (rhs, increment, record);
+  apply_pressure_increment (closures, increment, alpha, transport);
+  return true;
+}
+
+template <int dim>
+void SolidsPressureCorrection<dim>::apply_pressure_increment (
+    const closures::ClosureEvaluator    &closures,
+    const TrilinosWrappers::MPI::Vector &increment,
+    AlphaVector                         &alpha,
+    VolumeFractionTransport<dim>        &transport) const
+{
   // the nodal pressure increment w = S z becomes the limited edge fluxes
   // -dt K_ij (w_j - w_i)
   AlphaVector pressure_increment (alpha);
@@ -316,7 +327,6 @@ bool SolidsPressureCorrection<dim>::correct_solids_fraction (
                                     compaction_flux_matrix,
                                     pressure_increment,
                                     parameters.physical.maximum_packing);
-  return true;
 }
 
 /**

@@ -170,17 +170,10 @@ void VolumeFractionTransport<dim>::store (Vector &alpha_out) const
 }
 
 template <int dim>
-unsigned int VolumeFractionTransport<dim>::advance (Vector      &alpha_out,
-                                                    const double dt,
-                                                    const double cfl,
-                                                    const double alpha_max)
+double VolumeFractionTransport<dim>::artificial_diffusion (EdgeValues &diffusion) const
 {
-  load (alpha_out);
-  Vector            &alpha   = work;
-  const unsigned int n_owned = rows.size ();
-  // d_ij = max(-k_ij, 0, -k_ji)
-  std::vector<std::vector<double>> diffusion (n_owned);
-  double                           stable_dt = std::numeric_limits<double>::max ();
+  const unsigned int n_owned   = rows.size ();
+  double             stable_dt = std::numeric_limits<double>::max ();
   for (unsigned int i = 0; i < n_owned; ++i)
   {
     const Row &row = rows[i];
@@ -205,7 +198,130 @@ unsigned int VolumeFractionTransport<dim>::advance (Vector      &alpha_out,
     if (rate > 0)
       stable_dt = std::min (stable_dt, mass.local_element (i) / rate);
   }
-  stable_dt = dealii::Utilities::MPI::min (stable_dt, alpha.get_mpi_communicator ());
+  return stable_dt;
+}
+
+template <int dim>
+void VolumeFractionTransport<dim>::low_order_step (const Vector     &alpha,
+                                                   const EdgeValues &diffusion,
+                                                   const double      tau,
+                                                   EdgeValues       &low_flux,
+                                                   Vector           &low) const
+{
+  // low-order update written as antisymmetric edge fluxes
+  //   F^L_ij = k_ij a_j - k_ji a_i + d_ij (a_j - a_i)   (sum_j k_ji = 0)
+  for (unsigned int i = 0; i < rows.size (); ++i)
+  {
+    const Row   &row = rows[i];
+    const double a_i = alpha.local_element (i);
+    low_flux[i].assign (row.columns.size (), 0.0);
+    if (constrained[i])
+    {
+      low.local_element (i) = a_i;
+      continue;
+    }
+    double change = 0;
+    for (unsigned int e = 0; e < row.columns.size (); ++e)
+    {
+      const unsigned int j = row.columns[e];
+      if (j == i)
+        continue;
+      const double a_j = alpha.local_element (j);
+      const double f =
+          tau * (row.k[e] * a_j - row.kt[e] * a_i + diffusion[i][e] * (a_j - a_i));
+      low_flux[i][e] = f;
+      change += f;
+    }
+    low.local_element (i) = a_i + change / mass.local_element (i);
+  }
+}
+
+template <int dim>
+void VolumeFractionTransport<dim>::antidiffusive_fluxes (const Vector     &alpha,
+                                                         const Vector     &low,
+                                                         const EdgeValues &diffusion,
+                                                         const double      tau,
+                                                         const double      alpha_max,
+                                                         EdgeValues       &flux,
+                                                         Vector           &r_plus,
+                                                         Vector           &r_minus) const
+{
+  // antidiffusive fluxes (mass-lumping part neglected), prelimited, and Zalesak sums
+  for (unsigned int i = 0; i < rows.size (); ++i)
+  {
+    const Row &row = rows[i];
+    flux[i].assign (row.columns.size (), 0.0);
+    double p_plus = 0, p_minus = 0;
+    double upper = std::max (low.local_element (i), alpha.local_element (i));
+    double lower = std::min (low.local_element (i), alpha.local_element (i));
+    for (unsigned int e = 0; e < row.columns.size (); ++e)
+    {
+      const unsigned int j = row.columns[e];
+      upper = std::max ({upper, low.local_element (j), alpha.local_element (j)});
+      lower = std::min ({lower, low.local_element (j), alpha.local_element (j)});
+      if (j == i)
+        continue;
+      double f =
+          tau * diffusion[i][e] * (alpha.local_element (i) - alpha.local_element (j));
+      if (f * (low.local_element (i) - low.local_element (j)) < 0)
+        f = 0; // prelimiting: no flux against the low-order gradient
+      flux[i][e] = f;
+      p_plus += std::max (f, 0.0);
+      p_minus += std::min (f, 0.0);
+    }
+    upper                = std::max (std::min (upper, alpha_max), low.local_element (i));
+    lower                = std::min (std::max (lower, 0.0), low.local_element (i));
+    const double m       = constrained[i] ? 1.0 : mass.local_element (i);
+    const double q_plus  = m * (upper - low.local_element (i));
+    const double q_minus = m * (lower - low.local_element (i));
+    r_plus.local_element (i)  = p_plus > 0 ? std::min (1.0, q_plus / p_plus) : 1.0;
+    r_minus.local_element (i) = p_minus < 0 ? std::min (1.0, q_minus / p_minus) : 1.0;
+  }
+}
+
+template <int dim>
+void VolumeFractionTransport<dim>::limit_antidiffusive_fluxes (const EdgeValues &low_flux,
+                                                               const Vector     &r_plus,
+                                                               const Vector     &r_minus,
+                                                               EdgeValues       &flux,
+                                                               double           &removed,
+                                                               double &total) const
+{
+  // total edge flux G_ij = F^L_ij + l_ij f_ij
+  for (unsigned int i = 0; i < rows.size (); ++i)
+  {
+    const Row &row = rows[i];
+    for (unsigned int e = 0; e < row.columns.size (); ++e)
+    {
+      const unsigned int j       = row.columns[e];
+      const double       f       = flux[i][e];
+      double             limited = 0;
+      if (f != 0)
+      {
+        const double l =
+            f > 0 ? std::min (r_plus.local_element (i), r_minus.local_element (j))
+                  : std::min (r_minus.local_element (i), r_plus.local_element (j));
+        limited = l * f;
+        removed += (1 - l) * std::abs (f);
+        total += std::abs (f);
+      }
+      flux[i][e] = low_flux[i][e] + limited;
+    }
+  }
+}
+
+template <int dim>
+unsigned int VolumeFractionTransport<dim>::advance (Vector      &alpha_out,
+                                                    const double dt,
+                                                    const double cfl,
+                                                    const double alpha_max)
+{
+  load (alpha_out);
+  Vector            &alpha   = work;
+  const unsigned int n_owned = rows.size ();
+  EdgeValues         diffusion (n_owned);
+  const double stable_dt = dealii::Utilities::MPI::min (artificial_diffusion (diffusion),
+                                                        alpha.get_mpi_communicator ());
   // NaN or a vanishing stable sub-step: infinitely many sub-steps (the cast of a count
   // beyond unsigned int would be undefined, hence the test in double first)
   last_required_sub_steps =
@@ -218,93 +334,18 @@ unsigned int VolumeFractionTransport<dim>::advance (Vector      &alpha_out,
 
   Vector &low = scratch_low, &r_plus = scratch_plus, &r_minus = scratch_minus;
   // per edge: low-order flux F^L_ij (into i), antidiffusive flux f_ij, then their sum
-  std::vector<std::vector<double>> low_flux (n_owned), flux (n_owned);
-  double                           removed = 0, total = 0;
+  EdgeValues low_flux (n_owned), flux (n_owned);
+  double     removed = 0, total = 0;
   bound_activity = 0;
   for (unsigned int sub = 0; sub < n_sub; ++sub)
   {
     alpha.update_ghost_values ();
-    // low-order update written as antisymmetric edge fluxes
-    //   F^L_ij = k_ij a_j - k_ji a_i + d_ij (a_j - a_i)   (sum_j k_ji = 0)
-    for (unsigned int i = 0; i < n_owned; ++i)
-    {
-      const Row   &row = rows[i];
-      const double a_i = alpha.local_element (i);
-      low_flux[i].assign (row.columns.size (), 0.0);
-      if (constrained[i])
-      {
-        low.local_element (i) = a_i;
-        continue;
-      }
-      double change = 0;
-      for (unsigned int e = 0; e < row.columns.size (); ++e)
-      {
-        const unsigned int j = row.columns[e];
-        if (j == i)
-          continue;
-        const double a_j = alpha.local_element (j);
-        const double f =
-            tau * (row.k[e] * a_j - row.kt[e] * a_i + diffusion[i][e] * (a_j - a_i));
-        low_flux[i][e] = f;
-        change += f;
-      }
-      low.local_element (i) = a_i + change / mass.local_element (i);
-    }
+    low_order_step (alpha, diffusion, tau, low_flux, low);
     low.update_ghost_values ();
-    // antidiffusive fluxes (mass-lumping part neglected), prelimited, and Zalesak sums
-    for (unsigned int i = 0; i < n_owned; ++i)
-    {
-      const Row &row = rows[i];
-      flux[i].assign (row.columns.size (), 0.0);
-      double p_plus = 0, p_minus = 0;
-      double upper = std::max (low.local_element (i), alpha.local_element (i));
-      double lower = std::min (low.local_element (i), alpha.local_element (i));
-      for (unsigned int e = 0; e < row.columns.size (); ++e)
-      {
-        const unsigned int j = row.columns[e];
-        upper = std::max ({upper, low.local_element (j), alpha.local_element (j)});
-        lower = std::min ({lower, low.local_element (j), alpha.local_element (j)});
-        if (j == i)
-          continue;
-        double f =
-            tau * diffusion[i][e] * (alpha.local_element (i) - alpha.local_element (j));
-        if (f * (low.local_element (i) - low.local_element (j)) < 0)
-          f = 0; // prelimiting: no flux against the low-order gradient
-        flux[i][e] = f;
-        p_plus += std::max (f, 0.0);
-        p_minus += std::min (f, 0.0);
-      }
-      upper               = std::max (std::min (upper, alpha_max), low.local_element (i));
-      lower               = std::min (std::max (lower, 0.0), low.local_element (i));
-      const double m      = constrained[i] ? 1.0 : mass.local_element (i);
-      const double q_plus = m * (upper - low.local_element (i));
-      const double q_minus      = m * (lower - low.local_element (i));
-      r_plus.local_element (i)  = p_plus > 0 ? std::min (1.0, q_plus / p_plus) : 1.0;
-      r_minus.local_element (i) = p_minus < 0 ? std::min (1.0, q_minus / p_minus) : 1.0;
-    }
+    antidiffusive_fluxes (alpha, low, diffusion, tau, alpha_max, flux, r_plus, r_minus);
     r_plus.update_ghost_values ();
     r_minus.update_ghost_values ();
-    // total edge flux G_ij = F^L_ij + l_ij f_ij
-    for (unsigned int i = 0; i < n_owned; ++i)
-    {
-      const Row &row = rows[i];
-      for (unsigned int e = 0; e < row.columns.size (); ++e)
-      {
-        const unsigned int j       = row.columns[e];
-        const double       f       = flux[i][e];
-        double             limited = 0;
-        if (f != 0)
-        {
-          const double l =
-              f > 0 ? std::min (r_plus.local_element (i), r_minus.local_element (j))
-                    : std::min (r_minus.local_element (i), r_plus.local_element (j));
-          limited = l * f;
-          removed += (1 - l) * std::abs (f);
-          total += std::abs (f);
-        }
-        flux[i][e] = low_flux[i][e] + limited;
-      }
-    }
+    limit_antidiffusive_fluxes (low_flux, r_plus, r_minus, flux, removed, total);
     // global bounds [0, alpha_max]: low-order compression into a packed node is
     // blocked here, the discrete counterpart of the packing limit
     bound_activity += limit_to_bounds (alpha, flux, alpha_max);

@@ -35,37 +35,7 @@ void InletConditions<dim>::reinit (const Triangulation<dim> &triangulation,
   {
     if (b.type != BoundaryType::inlet)
       continue;
-    Group g;
-    g.name               = b.name;
-    g.id                 = b.id;
-    g.direction          = upward;
-    std::string velocity = parameters.inlet_superficial_velocity, mass_flow;
-    for (const InletGroup &entry : parameters.inlet_groups)
-      if (entry.name == b.name)
-      {
-        if (!entry.direction.empty ())
-          for (unsigned int d = 0; d < dim; ++d)
-            g.direction[d] = entry.direction[d];
-        if (!entry.velocity.empty ())
-        {
-          velocity  = entry.velocity;
-          g.uniform = false;
-        }
-        mass_flow = entry.mass_flow;
-      }
-    if (!mass_flow.empty ())
-    {
-      g.mass_flow = std::make_unique<FunctionParser<1>> (1);
-      g.mass_flow->initialize ("t", mass_flow, expression_constants ());
-    }
-    else
-    {
-      // the common U(t) is read as a function of x, y, (z,) t that ignores the position
-      g.velocity = std::make_unique<FunctionParser<dim>> (1);
-      g.velocity->initialize (
-          dim == 3 ? "x,y,z,t" : "x,y,t", velocity, expression_constants (), true);
-    }
-    groups.push_back (std::move (g));
+    groups.push_back (make_group (b));
   }
 
   // the quadrature points, weights and projections of the locally owned inlet faces,
@@ -124,22 +94,65 @@ void InletConditions<dim>::reinit (const Triangulation<dim> &triangulation,
              "boundary conditions/inlet directions",
              "the gas of the group '" + g.name +
                  "' would leave the domain (its direction points out of it)");
-    for (unsigned int k = 0; k <= 50; ++k)
+    check_speeds (g);
+  }
+}
+
+template <int dim>
+typename InletConditions<dim>::Group
+InletConditions<dim>::make_group (const Boundary &b) const
+{
+  Group g;
+  g.name               = b.name;
+  g.id                 = b.id;
+  g.direction          = upward;
+  std::string velocity = parameters.inlet_superficial_velocity, mass_flow;
+  for (const InletGroup &entry : parameters.inlet_groups)
+    if (entry.name == b.name)
     {
-      const double t = end_time * k / 50;
-      for (std::size_t q = 0;
-           q < (g.uniform ? 1 : g.points.size ()) && q < g.points.size ();
-           ++q)
-        if (const Point<dim> &x = g.points[q]; !std::isfinite (speed (g, x, t)))
-        {
-          std::ostringstream at;
-          at << "the velocity of the group '" << g.name << "' is " << speed (g, x, t)
-             << " at (" << x << "), t = " << t << " s";
-          throw InputError (g.mass_flow ? "boundary conditions/inlet mass flow rates"
-                                        : "boundary conditions/inlet velocities",
-                            at.str ());
-        }
+      if (!entry.direction.empty ())
+        for (unsigned int d = 0; d < dim; ++d)
+          g.direction[d] = entry.direction[d];
+      if (!entry.velocity.empty ())
+      {
+        velocity  = entry.velocity;
+        g.uniform = false;
+      }
+      mass_flow = entry.mass_flow;
     }
+  if (!mass_flow.empty ())
+  {
+    g.mass_flow = std::make_unique<FunctionParser<1>> (1);
+    g.mass_flow->initialize ("t", mass_flow, expression_constants ());
+  }
+  else
+  {
+    // the common U(t) is read as a function of x, y, (z,) t that ignores the position
+    g.velocity = std::make_unique<FunctionParser<dim>> (1);
+    g.velocity->initialize (
+        dim == 3 ? "x,y,z,t" : "x,y,t", velocity, expression_constants (), true);
+  }
+  return g;
+}
+
+template <int dim>
+void InletConditions<dim>::check_speeds (const Group &g) const
+{
+  for (unsigned int k = 0; k <= 50; ++k)
+  {
+    const double t = end_time * k / 50;
+    for (std::size_t q = 0;
+         q < (g.uniform ? 1 : g.points.size ()) && q < g.points.size ();
+         ++q)
+      if (const Point<dim> &x = g.points[q]; !std::isfinite (speed (g, x, t)))
+      {
+        std::ostringstream at;
+        at << "the velocity of the group '" << g.name << "' is " << speed (g, x, t)
+           << " at (" << x << "), t = " << t << " s";
+        throw InputError (g.mass_flow ? "boundary conditions/inlet mass flow rates"
+                                      : "boundary conditions/inlet velocities",
+                          at.str ());
+      }
   }
 }
 

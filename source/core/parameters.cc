@@ -297,17 +297,12 @@ void TimeSteppingParameters::parse_parameters (ParameterHandler &prm)
   require (growth_factor >= 1.0, "time stepping/growth factor", "must be >= 1");
 }
 
-void LinearSolverParameters::declare_parameters (ParameterHandler &prm)
+namespace
 {
-  prm.enter_subsection ("linear solver");
-  prm.declare_entry (
-      "relative tolerance", "1e-8", Double (), "FGMRES stop: |r| <= tol |b|.");
-  prm.declare_entry ("scalar tolerance",
-                     "1e-12",
-                     Double (),
-                     "Relative tolerance of the scalar (alpha correction) solves.");
-  prm.declare_entry ("maximum iterations", "300", Integer (1), "FGMRES iteration limit.");
-  prm.declare_entry ("restart", "100", Integer (1), "FGMRES restart length.");
+/** The entries of `linear solver` for ML (the velocity AMG of the assembled path and
+ * the p-multigrid's coarse AMG). */
+void declare_amg_entries (ParameterHandler &prm)
+{
   prm.declare_entry (
       "velocity smoother",
       "Chebyshev",
@@ -337,6 +332,23 @@ void LinearSolverParameters::declare_parameters (ParameterHandler &prm)
                      "V-cycle costlier but cut the FGMRES iterations; 4 rather than 2 "
                      "saves wall time on the bubbling 2D bed (doc/benchmarks.md "
                      "\"Where the FGMRES iterations come from (2D bed, start-up)\").");
+  prm.declare_entry (
+      "aggregation threshold", "1e-4", Double (0, 1), "ML aggregation threshold.");
+}
+} // namespace
+
+void LinearSolverParameters::declare_parameters (ParameterHandler &prm)
+{
+  prm.enter_subsection ("linear solver");
+  prm.declare_entry (
+      "relative tolerance", "1e-8", Double (), "FGMRES stop: |r| <= tol |b|.");
+  prm.declare_entry ("scalar tolerance",
+                     "1e-12",
+                     Double (),
+                     "Relative tolerance of the scalar (alpha correction) solves.");
+  prm.declare_entry ("maximum iterations", "300", Integer (1), "FGMRES iteration limit.");
+  prm.declare_entry ("restart", "100", Integer (1), "FGMRES restart length.");
+  declare_amg_entries (prm);
   prm.declare_entry ("inner solves",
                      "V-cycle",
                      Selection ("V-cycle|exact|exact velocity|exact coarse"),
@@ -354,8 +366,6 @@ void LinearSolverParameters::declare_parameters (ParameterHandler &prm)
                      "iterations printed with `verbose`), and `exact coarse` solves "
                      "the V-cycle's Q1 problem by GMRES with ML to 1e-10, to tell the "
                      "coarse ML's part.");
-  prm.declare_entry (
-      "aggregation threshold", "1e-4", Double (0, 1), "ML aggregation threshold.");
   prm.declare_entry (
       "rebuild growth",
       "1.3",

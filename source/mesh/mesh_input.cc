@@ -480,6 +480,72 @@ bool vertical_gravity (const dealii::Tensor<1, dim> &g,
   return g.norm () > 1e-12 * gravity.norm ();
 }
 
+/** The point probes within the domain's bounding box [low, high] (to `tolerance`). */
+template <int dim>
+void check_point_probes (const DomainChecks       &checks,
+                         const dealii::Point<dim> &low,
+                         const dealii::Point<dim> &high,
+                         const double              tolerance)
+{
+  for (const auto &p : checks.point_probes)
+  {
+    bool        inside = true;
+    std::string text, box_low, box_high;
+    for (int d = 0; d < dim; ++d)
+    {
+      inside = inside && p[d] >= low[d] - tolerance && p[d] <= high[d] + tolerance;
+      text += (d ? ", " : "") + format_number (p[d], 6);
+      box_low += (d ? ", " : "") + format_number (low[d], 6);
+      box_high += (d ? ", " : "") + format_number (high[d], 6);
+    }
+    require (inside,
+             "bed monitors/point probes",
+             "(" + text + ") lies outside the domain's bounding box (" + box_low +
+                 ") - (" + box_high + ")");
+  }
+}
+
+/** The held solids velocity finite at the corners and the centre of the bounding box
+ * [low, high] at 201 times up to the end time. */
+template <int dim>
+void check_held_solids_velocity (const DomainChecks       &checks,
+                                 const dealii::Point<dim> &low,
+                                 const dealii::Point<dim> &high)
+{
+  dealii::FunctionParser<3> f (3);
+  f.initialize ("x,y,z,t", checks.held_solids_velocity, {}, true);
+  const unsigned int              n_times = 200;
+  std::vector<dealii::Point<dim>> points;
+  for (unsigned int corner = 0; corner < (1u << dim); ++corner)
+  {
+    dealii::Point<dim> x;
+    for (int d = 0; d < dim; ++d)
+      x[d] = (corner >> d) & 1 ? high[d] : low[d];
+    points.push_back (x);
+  }
+  points.push_back (0.5 * (low + high));
+  for (unsigned int i = 0; i <= n_times; ++i)
+    for (const auto &x : points)
+    {
+      const double     t = checks.end_time * i / n_times;
+      dealii::Point<3> x3;
+      for (int d = 0; d < dim; ++d)
+        x3[d] = x[d];
+      f.set_time (t);
+      for (unsigned int c = 0; c < static_cast<unsigned int> (dim); ++c)
+      {
+        const double value = f.value (x3, c);
+        require (std::isfinite (value),
+                 "boundary conditions/held solids velocity",
+                 "component " + std::to_string (c + 1) + " of '" +
+                     checks.held_solids_velocity + "' is " + format_number (value) +
+                     " at t = " + format_number (t) + " s, x = (" +
+                     format_number (x3[0]) + ", " + format_number (x3[1]) + ", " +
+                     format_number (x3[2]) + ")");
+      }
+    }
+}
+
 /**
  * The case's placements against the mesh: gravity from the outlet toward the inlet,
  * the heights (bed, probes, planes) within the domain's extent along -gravity, the
@@ -541,58 +607,10 @@ void check_domain (const DomainChecks               &checks,
              format_number (value, 6) + " m lies outside the domain, which spans [" +
                  format_number (bottom, 6) + ", " + format_number (top, 6) +
                  "] m along -gravity from the origin");
-  for (const auto &p : checks.point_probes)
-  {
-    bool        inside = true;
-    std::string text, box_low, box_high;
-    for (int d = 0; d < dim; ++d)
-    {
-      inside = inside && p[d] >= low[d] - tolerance && p[d] <= high[d] + tolerance;
-      text += (d ? ", " : "") + format_number (p[d], 6);
-      box_low += (d ? ", " : "") + format_number (low[d], 6);
-      box_high += (d ? ", " : "") + format_number (high[d], 6);
-    }
-    require (inside,
-             "bed monitors/point probes",
-             "(" + text + ") lies outside the domain's bounding box (" + box_low +
-                 ") - (" + box_high + ")");
-  }
 
+  check_point_probes<dim> (checks, low, high, tolerance);
   if (!checks.held_solids_velocity.empty ())
-  {
-    dealii::FunctionParser<3> f (3);
-    f.initialize ("x,y,z,t", checks.held_solids_velocity, {}, true);
-    const unsigned int              n_times = 200;
-    std::vector<dealii::Point<dim>> points;
-    for (unsigned int corner = 0; corner < (1u << dim); ++corner)
-    {
-      dealii::Point<dim> x;
-      for (int d = 0; d < dim; ++d)
-        x[d] = (corner >> d) & 1 ? high[d] : low[d];
-      points.push_back (x);
-    }
-    points.push_back (0.5 * (low + high));
-    for (unsigned int i = 0; i <= n_times; ++i)
-      for (const auto &x : points)
-      {
-        const double     t = checks.end_time * i / n_times;
-        dealii::Point<3> x3;
-        for (int d = 0; d < dim; ++d)
-          x3[d] = x[d];
-        f.set_time (t);
-        for (unsigned int c = 0; c < static_cast<unsigned int> (dim); ++c)
-        {
-          const double value = f.value (x3, c);
-          require (std::isfinite (value),
-                   "boundary conditions/held solids velocity",
-                   "component " + std::to_string (c + 1) + " of '" +
-                       checks.held_solids_velocity + "' is " + format_number (value) +
-                       " at t = " + format_number (t) + " s, x = (" +
-                       format_number (x3[0]) + ", " + format_number (x3[1]) + ", " +
-                       format_number (x3[2]) + ")");
-        }
-      }
-  }
+    check_held_solids_velocity<dim> (checks, low, high);
 }
 } // namespace
 
@@ -659,31 +677,15 @@ std::string check_mesh_file (const MeshParameters &parameters,
   return file;
 }
 
-template <int dim>
-Boundaries read_mesh (const MeshParameters       &parameters,
-                      const std::string          &moving_wall_name,
-                      const std::string          &parameter_directory,
-                      const std::string          &output_folder,
-                      const dealii::Tensor<1, 3> &gravity,
-                      dealii::parallel::distributed::Triangulation<dim> &triangulation)
+namespace
 {
-  const std::string file      = check_mesh_file (parameters, parameter_directory);
-  const std::string extension = std::filesystem::path (file).extension ().string ();
-  std::unique_ptr<GeneratedMesh> generated;
-  if (extension == ".geo")
-    generated = std::make_unique<GeneratedMesh> (
-        file, dim, output_folder, parameters.geometry_parameters);
-  const std::string msh = generated ? generated->path () : file;
-  // named as the user knows it: the .geo, or the .msh given
-  const std::string shown = generated ? file : msh;
-
-  int        mesh_dim = 0;
-  const auto names    = read_physical_names (msh, dim - 1, mesh_dim);
-  require (mesh_dim < 2 || mesh_dim == dim, // a damaged mesh is mesh/file's
-           "dimension",
-           "the mesh '" + shown + "' is " + std::to_string (mesh_dim) +
-               "D (its highest physical group), the case says `set dimension = " +
-               std::to_string (dim) + "`");
+/** The case's inlet, outlet, wall, periodic and moving-wall groups, each looked up by
+ * name among the mesh's physical groups `names` (of the mesh named `shown`). */
+Boundaries named_boundaries (const MeshParameters             &parameters,
+                             const std::string                &moving_wall_name,
+                             const std::map<std::string, int> &names,
+                             const std::string                &shown)
+{
   auto id_of = [&] (const std::string &name, const std::string &parameter)
   {
     const auto it = names.find (name);
@@ -727,6 +729,95 @@ Boundaries read_mesh (const MeshParameters       &parameters,
          BoundaryType::moving_wall,
          "boundary conditions/moving wall",
          "is already another boundary of the case");
+  return ids;
+}
+
+/** `mesh/cylindrical wall`: the walls on a cylinder about the axis along gravity
+ * through the mesh's centre, the interior transfinite. */
+template <int dim>
+void attach_cylindrical_manifolds (
+    dealii::parallel::distributed::Triangulation<dim> &triangulation,
+    const Boundaries                                  &ids,
+    const dealii::Tensor<1, 3>                        &gravity)
+{
+  require (dim == 3, "mesh/cylindrical wall", "needs a 3D mesh");
+  if constexpr (dim == 3)
+  {
+    dealii::Tensor<1, 3>   axis = gravity / gravity.norm ();
+    const auto             box  = dealii::GridTools::compute_bounding_box (triangulation);
+    const dealii::Point<3> centre = box.center ();
+    triangulation.set_all_manifold_ids (2);
+    for (const auto wall : ids.ids (BoundaryType::wall))
+      triangulation.set_all_manifold_ids_on_boundary (wall, 1);
+    triangulation.set_manifold (1, dealii::CylindricalManifold<3> (axis, centre));
+    dealii::TransfiniteInterpolationManifold<3> transfinite;
+    transfinite.initialize (triangulation);
+    triangulation.set_manifold (2, transfinite);
+  }
+}
+
+/** The periodic pair of boundaries matched face by face and added to `triangulation`;
+ * an InputError naming `mesh/periodic boundaries` where they do not match. */
+template <int dim>
+void make_periodic (dealii::parallel::distributed::Triangulation<dim> &triangulation,
+                    const Boundaries                                  &ids,
+                    const MeshParameters                              &parameters)
+{
+  const auto periodic_low  = ids.id_of (BoundaryType::periodic_low),
+             periodic_high = ids.id_of (BoundaryType::periodic_high);
+  std::vector<dealii::GridTools::PeriodicFacePair<
+      typename dealii::parallel::distributed::Triangulation<dim>::cell_iterator>>
+                    pairs;
+  const std::string mismatch = "the faces of '" + parameters.periodic_high_name +
+                               "' are not those of '" + parameters.periodic_low_name +
+                               "' translated along the periodic direction";
+  try
+  {
+    dealii::GridTools::collect_periodic_faces (
+        triangulation, periodic_low, periodic_high, parameters.periodic_direction, pairs);
+  }
+  catch (const std::exception &)
+  {
+    throw InputError ("mesh/periodic boundaries", mismatch);
+  }
+  std::size_t low_faces = 0;
+  for (const auto &cell : triangulation.active_cell_iterators ())
+    for (const auto &face : cell->face_iterators ())
+      low_faces += face->at_boundary () && face->boundary_id () == periodic_low;
+  require (parameters.periodic_direction < dim && !pairs.empty () &&
+               pairs.size () == low_faces,
+           "mesh/periodic boundaries",
+           mismatch);
+  triangulation.add_periodicity (pairs);
+}
+} // namespace
+
+template <int dim>
+Boundaries read_mesh (const MeshParameters       &parameters,
+                      const std::string          &moving_wall_name,
+                      const std::string          &parameter_directory,
+                      const std::string          &output_folder,
+                      const dealii::Tensor<1, 3> &gravity,
+                      dealii::parallel::distributed::Triangulation<dim> &triangulation)
+{
+  const std::string file      = check_mesh_file (parameters, parameter_directory);
+  const std::string extension = std::filesystem::path (file).extension ().string ();
+  std::unique_ptr<GeneratedMesh> generated;
+  if (extension == ".geo")
+    generated = std::make_unique<GeneratedMesh> (
+        file, dim, output_folder, parameters.geometry_parameters);
+  const std::string msh = generated ? generated->path () : file;
+  // named as the user knows it: the .geo, or the .msh given
+  const std::string shown = generated ? file : msh;
+
+  int        mesh_dim = 0;
+  const auto names    = read_physical_names (msh, dim - 1, mesh_dim);
+  require (mesh_dim < 2 || mesh_dim == dim, // a damaged mesh is mesh/file's
+           "dimension",
+           "the mesh '" + shown + "' is " + std::to_string (mesh_dim) +
+               "D (its highest physical group), the case says `set dimension = " +
+               std::to_string (dim) + "`");
+  const Boundaries ids = named_boundaries (parameters, moving_wall_name, names, shown);
 
   check_element_types (msh, shown, dim);
   dealii::GridIn<dim> grid_in (triangulation);
@@ -742,58 +833,10 @@ Boundaries read_mesh (const MeshParameters       &parameters,
                           (generated ? " (as meshed by gmsh)" : ""));
   }
   check_refinement<dim> (parameters.checks, triangulation.n_cells (0));
-
   if (parameters.cylindrical_wall)
-  {
-    require (dim == 3, "mesh/cylindrical wall", "needs a 3D mesh");
-    if constexpr (dim == 3)
-    {
-      dealii::Tensor<1, 3> axis = gravity / gravity.norm ();
-      const auto           box  = dealii::GridTools::compute_bounding_box (triangulation);
-      const dealii::Point<3> centre = box.center ();
-      triangulation.set_all_manifold_ids (2);
-      for (const auto wall : ids.ids (BoundaryType::wall))
-        triangulation.set_all_manifold_ids_on_boundary (wall, 1);
-      triangulation.set_manifold (1, dealii::CylindricalManifold<3> (axis, centre));
-      dealii::TransfiniteInterpolationManifold<3> transfinite;
-      transfinite.initialize (triangulation);
-      triangulation.set_manifold (2, transfinite);
-    }
-  }
+    attach_cylindrical_manifolds (triangulation, ids, gravity);
   if (ids.has (BoundaryType::periodic_low))
-  {
-    const auto periodic_low  = ids.id_of (BoundaryType::periodic_low),
-               periodic_high = ids.id_of (BoundaryType::periodic_high);
-    std::vector<dealii::GridTools::PeriodicFacePair<
-        typename dealii::parallel::distributed::Triangulation<dim>::cell_iterator>>
-                      pairs;
-    const std::string mismatch = "the faces of '" + parameters.periodic_high_name +
-                                 "' are not those of '" + parameters.periodic_low_name +
-                                 "' translated along the periodic direction";
-    try
-    {
-      dealii::GridTools::collect_periodic_faces (triangulation,
-                                                 periodic_low,
-                                                 periodic_high,
-                                                 parameters.periodic_direction,
-                                                 pairs);
-    }
-    catch (const std::exception &)
-    {
-      throw InputError ("mesh/periodic boundaries", mismatch);
-    }
-    std::size_t low_faces = 0;
-    for (const auto &cell : triangulation.active_cell_iterators ())
-      for (const auto &face : cell->face_iterators ())
-        low_faces += face->at_boundary () && face->boundary_id () == periodic_low;
-    require (parameters.periodic_direction < dim && !pairs.empty () &&
-                 pairs.size () == low_faces,
-             "mesh/periodic boundaries",
-             "the faces of '" + parameters.periodic_high_name + "' are not those of '" +
-                 parameters.periodic_low_name +
-                 "' translated along the periodic direction");
-    triangulation.add_periodicity (pairs);
-  }
+    make_periodic (triangulation, ids, parameters);
   check_domain<dim> (parameters.checks, ids, gravity, triangulation);
   if (generated && defer_commit)
     pending_mesh = std::move (generated); // DeferredMeshCommit::commit() moves it

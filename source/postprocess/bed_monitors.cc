@@ -14,10 +14,76 @@
 
 #include <fstream>
 #include <sstream>
+#include <tuple>
 
 namespace wetbed
 {
 using namespace dealii;
+
+namespace
+{
+/** The height below which `share` of the solids lie (nodal masses sorted by height,
+ * heights along -g from the origin); collective. */
+template <int dim>
+double solids_height (const SolverState<dim> &s, const double share)
+{
+  const Tensor<1, dim> up = upward_direction<dim> (s.parameters.physical.gravity);
+  std::vector<std::pair<double, double>> height_mass;
+  const auto                            &mass = s.lumped_mass;
+  std::vector<types::global_dof_index>   alpha_dofs (s.alpha_fe.n_dofs_per_cell ());
+  std::vector<bool>                      seen (s.alpha.locally_owned_size (), false);
+  for (const auto &cell : s.alpha_dof_handler.active_cell_iterators ())
+    if (cell->is_locally_owned ())
+    {
+      cell->get_dof_indices (alpha_dofs);
+      for (const unsigned int v : cell->vertex_indices ())
+        if (s.alpha.locally_owned_elements ().is_element (alpha_dofs[v]))
+        {
+          const unsigned int local =
+              s.alpha.get_partitioner ()->global_to_local (alpha_dofs[v]);
+          if (seen[local])
+            continue;
+          seen[local] = true;
+          height_mass.emplace_back (cell->vertex (v) * up,
+                                    mass.local_element (local) *
+                                        s.alpha.local_element (local));
+        }
+    }
+  const auto all = Utilities::MPI::all_gather (s.communicator, height_mass);
+  std::vector<std::pair<double, double>> merged;
+  for (const auto &part : all)
+    merged.insert (merged.end (), part.begin (), part.end ());
+  std::sort (merged.begin (), merged.end ());
+
+  double total = 0;
+  for (const auto &hm : merged)
+    total += hm.second;
+  double running = 0;
+  for (const auto &hm : merged)
+  {
+    running += hm.second;
+    if (running >= share * total)
+    {
+      return hm.first;
+    }
+  }
+  return 0;
+}
+
+/** alpha_s's extremes over the nodes; collective. */
+template <int dim>
+std::pair<double, double> solids_fraction_range (const SolverState<dim> &s)
+{
+  double lo = std::numeric_limits<double>::max (), hi = -lo;
+  for (unsigned int i = 0; i < s.alpha.locally_owned_size (); ++i)
+  {
+    lo = std::min (lo, s.alpha.local_element (i));
+    hi = std::max (hi, s.alpha.local_element (i));
+  }
+  return {Utilities::MPI::min (lo, s.communicator),
+          Utilities::MPI::max (hi, s.communicator)};
+}
+} // namespace
 
 /**
  * Monitors of the bed after a step: pressure drop (mean p' over the inlet minus the
@@ -73,14 +139,7 @@ MonitorRow evaluate_monitors (const SolverState<dim> &s)
         s.time_step > 0 ? s.correction_momentum / (s.time_step * weight) : 0;
   }
 
-  double lo = std::numeric_limits<double>::max (), hi = -lo;
-  for (unsigned int i = 0; i < s.alpha.locally_owned_size (); ++i)
-  {
-    lo = std::min (lo, s.alpha.local_element (i));
-    hi = std::max (hi, s.alpha.local_element (i));
-  }
-  row.alpha_min = Utilities::MPI::min (lo, s.communicator);
-  row.alpha_max = Utilities::MPI::max (hi, s.communicator);
+  std::tie (row.alpha_min, row.alpha_max) = solids_fraction_range (s);
 
   const WaveSpeeds &speeds = s.wave_speeds;
   row.gas_speed_max        = speeds.gas;
@@ -88,38 +147,11 @@ MonitorRow evaluate_monitors (const SolverState<dim> &s)
   row.granular_sound_speed = speeds.granular_sound;
   row.time_error           = s.time_error;
 
-  // bed height: 95% of the solids lie below it (nodal masses sorted by height)
-  const Tensor<1, dim>                   up = upward_direction<dim> (pp.gravity);
-  std::vector<std::pair<double, double>> height_mass;
-  const auto                            &mass = s.lumped_mass;
-  std::vector<types::global_dof_index>   alpha_dofs (s.alpha_fe.n_dofs_per_cell ());
-  std::vector<bool>                      seen (s.alpha.locally_owned_size (), false);
-  for (const auto &cell : s.alpha_dof_handler.active_cell_iterators ())
-    if (cell->is_locally_owned ())
-    {
-      cell->get_dof_indices (alpha_dofs);
-      for (const unsigned int v : cell->vertex_indices ())
-        if (s.alpha.locally_owned_elements ().is_element (alpha_dofs[v]))
-        {
-          const unsigned int local =
-              s.alpha.get_partitioner ()->global_to_local (alpha_dofs[v]);
-          if (seen[local])
-            continue;
-          seen[local] = true;
-          height_mass.emplace_back (cell->vertex (v) * up,
-                                    mass.local_element (local) *
-                                        s.alpha.local_element (local));
-        }
-    }
-  const auto all = Utilities::MPI::all_gather (s.communicator, height_mass);
-  std::vector<std::pair<double, double>> merged;
-  for (const auto &part : all)
-    merged.insert (merged.end (), part.begin (), part.end ());
-  std::sort (merged.begin (), merged.end ());
-
+  row.bed_height = solids_height (s, 0.95);
   // granular temperature: extremes over the nodes, mean weighted by the solids mass
   if (s.kinetic_theory)
   {
+    const auto &mass = s.lumped_mass;
     double lo = std::numeric_limits<double>::max (), hi = 0, weighted = 0, weight = 0;
     for (unsigned int i = 0; i < s.theta.locally_owned_size (); ++i)
     {
@@ -137,19 +169,6 @@ MonitorRow evaluate_monitors (const SolverState<dim> &s)
     row.granular_energy = s.granular_energy;
   }
   evaluate_bed_profile (s, row);
-  double total = 0;
-  for (const auto &hm : merged)
-    total += hm.second;
-  double running = 0;
-  for (const auto &hm : merged)
-  {
-    running += hm.second;
-    if (running >= 0.95 * total)
-    {
-      row.bed_height = hm.first;
-      break;
-    }
-  }
   return row;
 }
 

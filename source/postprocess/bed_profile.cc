@@ -7,6 +7,55 @@ namespace wetbed
 {
 using namespace dealii;
 
+namespace
+{
+/** alpha_s and p' at `bed monitors/point probes`: the owner of the cell around the point
+ * evaluates, the others add 0 (a point on a partition boundary is found by two ranks:
+ * averaged). */
+template <int dim>
+void evaluate_point_probes (const SolverState<dim> &s, MonitorRow &row)
+{
+  const auto                      &bed = s.parameters.bed_monitors;
+  const FEValuesExtractors::Scalar pressure (2 * dim);
+  row.probe_alpha.assign (bed.point_probes.size (), 0.0);
+  row.probe_pressure.assign (bed.point_probes.size (), 0.0);
+  std::vector<double> found (bed.point_probes.size (), 0.0);
+  for (unsigned int i = 0; i < bed.point_probes.size (); ++i)
+  {
+    Point<dim> point;
+    for (unsigned int d = 0; d < dim; ++d)
+      point[d] = bed.point_probes[i][d];
+    for (const auto &cell : s.alpha_dof_handler.active_cell_iterators ())
+      if (cell->is_locally_owned () && cell->point_inside (point))
+      {
+        const Point<dim>      unit = s.mapping.transform_real_to_unit_cell (cell, point);
+        const Quadrature<dim> at_point (GeometryInfo<dim>::project_to_unit_cell (unit));
+        FEValues<dim>         a_point (s.mapping, s.alpha_fe, at_point, update_values);
+        FEValues<dim>         p_point (s.mapping, s.flow_fe, at_point, update_values);
+        a_point.reinit (cell);
+        p_point.reinit (typename DoFHandler<dim>::active_cell_iterator (
+            &s.triangulation, cell->level (), cell->index (), &s.flow_dof_handler));
+        std::vector<double> a (1), p (1);
+        a_point.get_function_values (s.alpha, a);
+        p_point[pressure].get_function_values (s.flow_solution, p);
+        row.probe_alpha[i]    = a[0];
+        row.probe_pressure[i] = p[0];
+        found[i]              = 1;
+        break;
+      }
+  }
+  Utilities::MPI::sum (found, s.communicator, found);
+  Utilities::MPI::sum (row.probe_alpha, s.communicator, row.probe_alpha);
+  Utilities::MPI::sum (row.probe_pressure, s.communicator, row.probe_pressure);
+  for (unsigned int i = 0; i < found.size (); ++i)
+    if (found[i] > 1)
+    {
+      row.probe_alpha[i] /= found[i];
+      row.probe_pressure[i] /= found[i];
+    }
+}
+} // namespace
+
 /**
  * The height-resolved monitors: alpha_s (and p') averaged over the cell layer that
  * contains each probe plane and each plane of `bed monitors/pressure drop between`
@@ -111,45 +160,7 @@ void evaluate_bed_profile (const SolverState<dim> &s, MonitorRow &row)
   }
   const double initial_height = s.parameters.initial.bed_height;
   row.expansion_ratio = initial_height > 0 ? row.bed_surface_height / initial_height : 0;
-
-  // point probes: the owner of the cell around the point evaluates, the others add 0
-  // (a point on a partition boundary is found by two ranks: averaged)
-  row.probe_alpha.assign (bed.point_probes.size (), 0.0);
-  row.probe_pressure.assign (bed.point_probes.size (), 0.0);
-  std::vector<double> found (bed.point_probes.size (), 0.0);
-  for (unsigned int i = 0; i < bed.point_probes.size (); ++i)
-  {
-    Point<dim> point;
-    for (unsigned int d = 0; d < dim; ++d)
-      point[d] = bed.point_probes[i][d];
-    for (const auto &cell : s.alpha_dof_handler.active_cell_iterators ())
-      if (cell->is_locally_owned () && cell->point_inside (point))
-      {
-        const Point<dim>      unit = s.mapping.transform_real_to_unit_cell (cell, point);
-        const Quadrature<dim> at_point (GeometryInfo<dim>::project_to_unit_cell (unit));
-        FEValues<dim>         a_point (s.mapping, s.alpha_fe, at_point, update_values);
-        FEValues<dim>         p_point (s.mapping, s.flow_fe, at_point, update_values);
-        a_point.reinit (cell);
-        p_point.reinit (typename DoFHandler<dim>::active_cell_iterator (
-            &s.triangulation, cell->level (), cell->index (), &s.flow_dof_handler));
-        std::vector<double> a (1), p (1);
-        a_point.get_function_values (s.alpha, a);
-        p_point[pressure].get_function_values (s.flow_solution, p);
-        row.probe_alpha[i]    = a[0];
-        row.probe_pressure[i] = p[0];
-        found[i]              = 1;
-        break;
-      }
-  }
-  Utilities::MPI::sum (found, s.communicator, found);
-  Utilities::MPI::sum (row.probe_alpha, s.communicator, row.probe_alpha);
-  Utilities::MPI::sum (row.probe_pressure, s.communicator, row.probe_pressure);
-  for (unsigned int i = 0; i < found.size (); ++i)
-    if (found[i] > 1)
-    {
-      row.probe_alpha[i] /= found[i];
-      row.probe_pressure[i] /= found[i];
-    }
+  evaluate_point_probes (s, row);
 }
 
 template void evaluate_bed_profile (const SolverState<2> &, MonitorRow &);

@@ -97,95 +97,58 @@ bool update_pvd_record (const std::string &folder,
   std::filesystem::rename (path + ".partial", path, error);
   return !error;
 }
-} // namespace
-
-/**
- * Writes u_g, u_s, p', alpha_s, alpha_g, the solids pressure P_s(alpha_s) (nodal, on the
- * alpha_s space, as the compaction force uses it), Theta (kinetic theory), the drag
- * coefficient beta and the solids shear viscosity mu_s (cell means over the Gauss points,
- * with the local slip, Theta and strain rate), the refinement level and the MPI rank;
- * with the kinetic theory also the solids shear rate |gamma| = sqrt(2 D_dev:D_dev), the
- * parts of the solids shear stress mu_i |gamma| (kinetic, collisional, frictional and,
- * in a wet scene, liquid-bridge) and the collisional dissipation gamma (cell means; the
- * stress split and dissipation of seed 000's Figs. 9-10);
- * as VTU pieces with a PVTU record and/or as one parallel HDF5 file per output indexed
- * by fields.xdmf (`output/field format`).
+/** The cell fields of an output: the mean drag coefficient and solids shear viscosity
+ * of each cell, its refinement level and, with the kinetic theory, the shear rate, the
+ * stress split (kinetic, collisional, frictional, wet) and the collisional dissipation.
  */
-template <int dim>
-FieldOutput<dim>::FieldOutput (const Parameters &parameters, TimerOutput &timer)
-    : parameters (parameters), timer (timer)
+struct CellFields
 {
-}
+  static const std::vector<std::string> split_names;
+  dealii::Vector<float>                 drag_coefficient, shear_viscosity, level;
+  std::vector<dealii::Vector<float>>    split;
+  bool                                  wet_scene = false;
+};
+const std::vector<std::string> CellFields::split_names = {"solids_shear_rate",
+                                                          "kinetic_shear_stress",
+                                                          "collisional_shear_stress",
+                                                          "frictional_shear_stress",
+                                                          "wet_shear_stress",
+                                                          "collisional_dissipation"};
 
 template <int dim>
-void FieldOutput<dim>::write (const SolverState<dim> &s)
+CellFields cell_fields (const SolverState<dim> &s)
 {
-  using AlphaVector                            = typename SolverState<dim>::AlphaVector;
-  const auto                    &triangulation = s.triangulation;
-  const Mapping<dim>            &mapping       = s.mapping;
-  const FiniteElement<dim>      &flow_fe       = s.flow_fe;
-  const FiniteElement<dim>      &alpha_fe      = s.alpha_fe;
+  using AlphaVector                      = typename SolverState<dim>::AlphaVector;
+  const Mapping<dim>            &mapping = s.mapping;
   const DoFHandler<dim>         &flow_dof_handler  = s.flow_dof_handler;
-  const DoFHandler<dim>         &alpha_dof_handler = s.alpha_dof_handler;
   const AlphaVector             &alpha             = s.alpha;
   const AlphaVector             &theta             = s.theta;
   const auto                    &flow_solution     = s.flow_solution;
   const auto                    &closure_evaluator = s.closures;
   const closures::KineticTheory *kinetic_theory    = s.kinetic_theory;
-  TimerOutput::Scope             scope (timer, "output");
-  DataOut<dim>                   data_out;
-  data_out.attach_triangulation (triangulation);
-  std::vector<std::string> names;
-  for (unsigned int d = 0; d < dim; ++d)
-    names.push_back ("gas_velocity");
-  for (unsigned int d = 0; d < dim; ++d)
-    names.push_back ("solids_velocity");
-  names.push_back ("pressure");
-  std::vector<DataComponentInterpretation::DataComponentInterpretation> kinds (
-      2 * dim, DataComponentInterpretation::component_is_part_of_vector);
-  kinds.push_back (DataComponentInterpretation::component_is_scalar);
-  data_out.add_data_vector (flow_dof_handler, flow_solution, names, kinds);
-  data_out.add_data_vector (alpha_dof_handler, alpha, "alpha_s");
-  AlphaVector alpha_g (alpha);
-  for (unsigned int i = 0; i < alpha_g.locally_owned_size (); ++i)
-    alpha_g.local_element (i) = 1.0 - alpha.local_element (i);
-  alpha_g.update_ghost_values ();
-  data_out.add_data_vector (alpha_dof_handler, alpha_g, "alpha_g");
-  AlphaVector solids_pressure (alpha);
-  for (unsigned int i = 0; i < solids_pressure.locally_owned_size (); ++i)
-    solids_pressure.local_element (i) =
-        closure_evaluator.compaction_pressure (alpha.local_element (i));
-  solids_pressure.update_ghost_values ();
-  data_out.add_data_vector (alpha_dof_handler, solids_pressure, "solids_pressure");
-  if (kinetic_theory)
-    data_out.add_data_vector (alpha_dof_handler, theta, "granular_temperature");
-  if (s.time_averages)
-    s.time_averages->add_fields (
-        data_out, flow_dof_handler, alpha_dof_handler, names, s.time);
-
-  const unsigned int n_cells = triangulation.n_active_cells ();
-  Vector<float> drag_coefficient (n_cells), shear_viscosity (n_cells), level (n_cells);
-  // kinetic theory only: shear rate, stress split (kinetic, collisional, frictional,
-  // wet) and collisional dissipation
-  const std::vector<std::string> split_names = {"solids_shear_rate",
-                                                "kinetic_shear_stress",
-                                                "collisional_shear_stress",
-                                                "frictional_shear_stress",
-                                                "wet_shear_stress",
-                                                "collisional_dissipation"};
-  const bool wet_scene = kinetic_theory && kinetic_theory->wet () != nullptr;
-  std::vector<Vector<float>> split (kinetic_theory ? split_names.size () : 0,
-                                    Vector<float> (n_cells));
+  const unsigned int             n_cells           = s.triangulation.n_active_cells ();
+  CellFields                     fields;
+  fields.drag_coefficient.reinit (n_cells);
+  fields.shear_viscosity.reinit (n_cells);
+  fields.level.reinit (n_cells);
+  fields.wet_scene = kinetic_theory && kinetic_theory->wet () != nullptr;
+  fields.split.assign (kinetic_theory ? CellFields::split_names.size () : 0,
+                       Vector<float> (n_cells));
+  auto &drag_coefficient = fields.drag_coefficient,
+       &shear_viscosity = fields.shear_viscosity, &level = fields.level;
+  auto               &split = fields.split;
   std::vector<double> split_integral (split.size ());
   const QGauss<dim>   quadrature (2);
-  FEValues<dim>       flow_values (
-      mapping, flow_fe, quadrature, update_values | update_gradients | update_JxW_values);
-  FEValues<dim> alpha_values (mapping, alpha_fe, quadrature, update_values);
+  FEValues<dim>       flow_values (mapping,
+                             s.flow_fe,
+                             quadrature,
+                             update_values | update_gradients | update_JxW_values);
+  FEValues<dim>       alpha_values (mapping, s.alpha_fe, quadrature, update_values);
   const FEValuesExtractors::Vector gas (0), solids (dim);
   std::vector<Tensor<1, dim>>      u_g (quadrature.size ()), u_s (quadrature.size ());
   std::vector<Tensor<2, dim>>      grad_u_s (quadrature.size ());
   std::vector<double> alpha_q (quadrature.size ()), theta_q (quadrature.size ());
-  auto                alpha_cell = alpha_dof_handler.begin_active ();
+  auto                alpha_cell = s.alpha_dof_handler.begin_active ();
   for (const auto &cell : flow_dof_handler.active_cell_iterators ())
   {
     if (cell->is_locally_owned ())
@@ -232,32 +195,90 @@ void FieldOutput<dim>::write (const SolverState<dim> &s)
     }
     ++alpha_cell;
   }
-  data_out.add_data_vector (drag_coefficient, "drag_coefficient");
-  data_out.add_data_vector (shear_viscosity, "solids_shear_viscosity");
-  for (unsigned int k = 0; k < split.size (); ++k)
-    if (split_names[k] != "wet_shear_stress" || wet_scene)
-      data_out.add_data_vector (split[k], split_names[k]);
-  data_out.add_data_vector (level, "refinement_level");
+  return fields;
+}
+} // namespace
+
+/**
+ * Writes u_g, u_s, p', alpha_s, alpha_g, the solids pressure P_s(alpha_s) (nodal, on the
+ * alpha_s space, as the compaction force uses it), Theta (kinetic theory), the drag
+ * coefficient beta and the solids shear viscosity mu_s (cell means over the Gauss points,
+ * with the local slip, Theta and strain rate), the refinement level and the MPI rank;
+ * with the kinetic theory also the solids shear rate |gamma| = sqrt(2 D_dev:D_dev), the
+ * parts of the solids shear stress mu_i |gamma| (kinetic, collisional, frictional and,
+ * in a wet scene, liquid-bridge) and the collisional dissipation gamma (cell means; the
+ * stress split and dissipation of seed 000's Figs. 9-10);
+ * as VTU pieces with a PVTU record and/or as one parallel HDF5 file per output indexed
+ * by fields.xdmf (`output/field format`).
+ */
+template <int dim>
+FieldOutput<dim>::FieldOutput (const Parameters &parameters, TimerOutput &timer)
+    : parameters (parameters), timer (timer)
+{
+}
+
+template <int dim>
+void FieldOutput<dim>::write (const SolverState<dim> &s)
+{
+  using AlphaVector                        = typename SolverState<dim>::AlphaVector;
+  const auto            &triangulation     = s.triangulation;
+  const DoFHandler<dim> &flow_dof_handler  = s.flow_dof_handler;
+  const DoFHandler<dim> &alpha_dof_handler = s.alpha_dof_handler;
+  const AlphaVector     &alpha             = s.alpha;
+  TimerOutput::Scope     scope (timer, "output");
+  DataOut<dim>           data_out;
+  data_out.attach_triangulation (triangulation);
+  std::vector<std::string> names;
+  for (unsigned int d = 0; d < dim; ++d)
+    names.push_back ("gas_velocity");
+  for (unsigned int d = 0; d < dim; ++d)
+    names.push_back ("solids_velocity");
+  names.push_back ("pressure");
+  std::vector<DataComponentInterpretation::DataComponentInterpretation> kinds (
+      2 * dim, DataComponentInterpretation::component_is_part_of_vector);
+  kinds.push_back (DataComponentInterpretation::component_is_scalar);
+  data_out.add_data_vector (flow_dof_handler, s.flow_solution, names, kinds);
+  data_out.add_data_vector (alpha_dof_handler, alpha, "alpha_s");
+  AlphaVector alpha_g (alpha);
+  for (unsigned int i = 0; i < alpha_g.locally_owned_size (); ++i)
+    alpha_g.local_element (i) = 1.0 - alpha.local_element (i);
+  alpha_g.update_ghost_values ();
+  data_out.add_data_vector (alpha_dof_handler, alpha_g, "alpha_g");
+  AlphaVector solids_pressure (alpha);
+  for (unsigned int i = 0; i < solids_pressure.locally_owned_size (); ++i)
+    solids_pressure.local_element (i) =
+        s.closures.compaction_pressure (alpha.local_element (i));
+  solids_pressure.update_ghost_values ();
+  data_out.add_data_vector (alpha_dof_handler, solids_pressure, "solids_pressure");
+  if (s.kinetic_theory)
+    data_out.add_data_vector (alpha_dof_handler, s.theta, "granular_temperature");
+  if (s.time_averages)
+    s.time_averages->add_fields (
+        data_out, flow_dof_handler, alpha_dof_handler, names, s.time);
+
+  // the cell fields (DataOut keeps pointers to them until build_patches)
+  const CellFields fields = cell_fields (s);
+  data_out.add_data_vector (fields.drag_coefficient, "drag_coefficient");
+  data_out.add_data_vector (fields.shear_viscosity, "solids_shear_viscosity");
+  for (unsigned int k = 0; k < fields.split.size (); ++k)
+    if (CellFields::split_names[k] != "wet_shear_stress" || fields.wet_scene)
+      data_out.add_data_vector (fields.split[k], CellFields::split_names[k]);
+  data_out.add_data_vector (fields.level, "refinement_level");
   Vector<float> subdomain (triangulation.n_active_cells ());
   subdomain = triangulation.locally_owned_subdomain ();
   data_out.add_data_vector (subdomain, "rank");
-  data_out.build_patches (mapping, 2, DataOut<dim>::curved_inner_cells);
+  data_out.build_patches (s.mapping, 2, DataOut<dim>::curved_inner_cells);
   write_files (data_out, s.time, s.communicator);
   ++count.output_index;
   count.next_output_time += parameters.output.field_interval;
 }
 
 template <int dim>
-void FieldOutput<dim>::write_files (const DataOut<dim> &data_out,
-                                    const double        time,
-                                    const MPI_Comm      communicator)
+double FieldOutput<dim>::check_room (const DataOut<dim> &data_out,
+                                     const std::string  &stem,
+                                     const double        time,
+                                     const MPI_Comm      communicator) const
 {
-  const bool        root   = Utilities::MPI::this_mpi_process (communicator) == 0;
-  const std::string folder = parameters.output.folder + "/";
-  const std::string stem   = "fields_" + Utilities::int_to_string (count.output_index, 5);
-  // HDF5 prints its error stack itself before deal.II throws: the failure is reported
-  // below, in one line
-  H5Eset_auto2 (H5E_DEFAULT, nullptr, nullptr);
   // room first: a full disk in the middle of the collective HDF5 write leaves the ranks
   // waiting for each other. Estimated: the patch points' coordinates and values, in
   // double for HDF5 and in float for VTU (before its compression), scaled by what the
@@ -280,9 +301,56 @@ void FieldOutput<dim>::write_files (const DataOut<dim> &data_out,
         "' (needs ~" + std::to_string (needed / 1048576.0) + " MB, " +
         std::to_string (available / 1048576.0) +
         " MB free); the outputs before and the last checkpoint are kept");
-  bool        written = true;
-  XDMFEntry   entry;
-  std::string pvtu; // the VTU record
+  return estimate;
+}
+
+template <int dim>
+bool FieldOutput<dim>::write_xdmf_index (const DataOut<dim> &data_out,
+                                         const XDMFEntry    &entry,
+                                         const MPI_Comm      communicator)
+{
+  const bool        root    = Utilities::MPI::this_mpi_process (communicator) == 0;
+  const std::string folder  = parameters.output.folder + "/";
+  bool              written = true;
+  // the XDMF index of the complete outputs, rewritten (rank 0) beside the old one and
+  // renamed over it once whole
+  std::vector<XDMFEntry> entries = count.xdmf_entries;
+  entries.push_back (entry);
+  const std::string index = folder + "fields.xdmf";
+  try
+  {
+    data_out.write_xdmf_file (entries, index + ".partial", communicator);
+  }
+  catch (const std::exception &)
+  {
+    written = false;
+  }
+  if (root && written)
+  {
+    std::error_code error;
+    written = ends_with (index + ".partial", "</Xdmf>\n");
+    if (written)
+      std::filesystem::rename (index + ".partial", index, error);
+    written = written && !error;
+  }
+  return Utilities::MPI::min (written ? 1 : 0, communicator) == 1;
+}
+
+template <int dim>
+void FieldOutput<dim>::write_files (const DataOut<dim> &data_out,
+                                    const double        time,
+                                    const MPI_Comm      communicator)
+{
+  const bool        root   = Utilities::MPI::this_mpi_process (communicator) == 0;
+  const std::string folder = parameters.output.folder + "/";
+  const std::string stem   = "fields_" + Utilities::int_to_string (count.output_index, 5);
+  // HDF5 prints its error stack itself before deal.II throws: the failure is reported
+  // below, in one line
+  H5Eset_auto2 (H5E_DEFAULT, nullptr, nullptr);
+  const double estimate = check_room (data_out, stem, time, communicator);
+  bool         written  = true;
+  XDMFEntry    entry;
+  std::string  pvtu; // the VTU record
   try
   {
     if (parameters.output.vtu)
@@ -327,28 +395,7 @@ void FieldOutput<dim>::write_files (const DataOut<dim> &data_out,
   last_output_estimate = estimate;
   if (written && parameters.output.hdf5)
   {
-    // the XDMF index of the complete outputs, rewritten (rank 0) beside the old one and
-    // renamed over it once whole
-    std::vector<XDMFEntry> entries = count.xdmf_entries;
-    entries.push_back (entry);
-    const std::string index = folder + "fields.xdmf";
-    try
-    {
-      data_out.write_xdmf_file (entries, index + ".partial", communicator);
-    }
-    catch (const std::exception &)
-    {
-      written = false;
-    }
-    if (root && written)
-    {
-      std::error_code error;
-      written = ends_with (index + ".partial", "</Xdmf>\n");
-      if (written)
-        std::filesystem::rename (index + ".partial", index, error);
-      written = written && !error;
-    }
-    written = Utilities::MPI::min (written ? 1 : 0, communicator) == 1;
+    written = write_xdmf_index (data_out, entry, communicator);
     if (written)
       count.xdmf_entries.push_back (entry);
   }

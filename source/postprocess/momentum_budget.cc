@@ -6,6 +6,8 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 
+#include <array>
+
 /*
  * The inertial part of the vertical momentum budget of monitors.csv, the part that
  * closes what the boundary forces (wall_forces.cc) and the consistent boundary
@@ -47,6 +49,73 @@ namespace wetbed
 {
 using namespace dealii;
 
+namespace
+{
+/** C - A at a point for the momentum form `form`: the inertia the discrete momentum
+ * equation's form leaves out of d(alpha rho u)/dt + div(alpha rho u u) along e, per unit
+ * density (fractions at t_{n+1}, t_n and the linearisation point; D = div(alpha* u*);
+ * u_up = u^{n+1} . e, u_old_up = u^n . e, u_change = u^{n+1} - u*). */
+template <int dim>
+double continuity_defect (const MomentumForm          form,
+                          const std::array<double, 3> fractions,
+                          const double                divergence,
+                          const double                u_up,
+                          const double                u_old_up,
+                          const Tensor<1, dim>       &u_change,
+                          const Tensor<1, dim>       &up,
+                          const double                dt)
+{
+  const auto [fraction_new, fraction_old, fraction_lag] = fractions;
+  double defect = (fraction_new - fraction_lag) * u_up / dt;
+  if (form == MomentumForm::conservative)
+    defect += std::min (divergence, 0.0) * u_change * up;
+  else if (form == MomentumForm::advective)
+    defect += (fraction_lag - fraction_old) * u_old_up / dt + divergence * u_up;
+  else
+    defect += 0.5 * ((fraction_lag - fraction_old) * u_up / dt + divergence * u_up);
+  return defect;
+}
+
+/** sum_k int alpha_k rho_k (u_k . e)(u_k . n) over the inlet and outlet faces of `cell`
+ * (`alpha_cell` the same cell of the alpha_s space), added to `outflow`. */
+template <int dim, typename CellIterator>
+void add_momentum_outflow (const SolverState<dim> &s,
+                           const CellIterator     &cell,
+                           const CellIterator     &alpha_cell,
+                           FEFaceValues<dim>      &flow_face,
+                           FEFaceValues<dim>      &alpha_face,
+                           double                 &outflow)
+{
+  const auto                      &pp          = s.parameters.physical;
+  const Tensor<1, dim>             up          = upward_direction<dim> (pp.gravity);
+  const double                     density[2]  = {pp.gas_density, pp.particle_density};
+  const FEValuesExtractors::Vector velocity[2] = {FEValuesExtractors::Vector (0),
+                                                  FEValuesExtractors::Vector (dim)};
+  const unsigned int               n_q         = flow_face.n_quadrature_points;
+  std::vector<double>              a_face (n_q);
+  std::vector<Tensor<1, dim>>      u_face (n_q);
+  for (const auto &face : cell->face_iterators ())
+  {
+    if (!face->at_boundary () ||
+        !(s.boundaries.is (face->boundary_id (), BoundaryType::inlet) ||
+          s.boundaries.is (face->boundary_id (), BoundaryType::outlet)))
+      continue;
+    flow_face.reinit (cell, face);
+    alpha_face.reinit (alpha_cell, face);
+    alpha_face.get_function_values (s.alpha, a_face);
+    for (unsigned int k = 0; k < 2; ++k)
+    {
+      flow_face[velocity[k]].get_function_values (s.flow_solution, u_face);
+      for (unsigned int q = 0; q < n_q; ++q)
+        outflow += density[k] *
+                   inertial_fraction (k, a_face[q], pp.residual_solids_fraction) *
+                   (u_face[q] * up) * (u_face[q] * flow_face.normal_vector (q)) *
+                   flow_face.JxW (q);
+    }
+  }
+}
+} // namespace
+
 template <int dim>
 InertialBudget evaluate_inertial_budget (const SolverState<dim> &s)
 {
@@ -70,10 +139,8 @@ InertialBudget evaluate_inertial_budget (const SolverState<dim> &s)
   const FEValuesExtractors::Vector velocity[2] = {FEValuesExtractors::Vector (0),
                                                   FEValuesExtractors::Vector (dim)};
   const unsigned int               n_q         = quadrature.size ();
-  std::vector<double>              a_new (n_q), a_old (n_q), a_lag (n_q),
-      a_face (face_quadrature.size ());
-  std::vector<Tensor<1, dim>> grad_a_lag (n_q), u_new (n_q), u_old (n_q), u_lag (n_q),
-      u_face (face_quadrature.size ());
+  std::vector<double>              a_new (n_q), a_old (n_q), a_lag (n_q);
+  std::vector<Tensor<1, dim>> grad_a_lag (n_q), u_new (n_q), u_old (n_q), u_lag (n_q);
   std::vector<Tensor<2, dim>> grad_u_lag (n_q);
   const MomentumForm          form = s.parameters.momentum_form;
 
@@ -113,38 +180,22 @@ InertialBudget evaluate_inertial_budget (const SolverState<dim> &s)
               k, a_lag[q], grad_a_lag[q], u_lag[q], grad_u_lag[q], residual);
           const double u_up = u_new[q] * up;
           // C - A, A the assembled form (see above)
-          double defect = (fraction_new - fraction_lag) * u_up / dt;
-          if (form == MomentumForm::conservative)
-            defect += std::min (divergence, 0.0) * (u_new[q] - u_lag[q]) * up;
-          else if (form == MomentumForm::advective)
-            defect +=
-                (fraction_lag - fraction_old) * (u_old[q] * up) / dt + divergence * u_up;
-          else
-            defect +=
-                0.5 * ((fraction_lag - fraction_old) * u_up / dt + divergence * u_up);
+          const double defect =
+              continuity_defect<dim> (form,
+                                      {fraction_new, fraction_old, fraction_lag},
+                                      divergence,
+                                      u_up,
+                                      u_old[q] * up,
+                                      u_new[q] - u_lag[q],
+                                      up,
+                                      dt);
           budget.momentum += density[k] * fraction_new * u_up * JxW;
           if (dt > 0)
             budget.continuity_defect += density[k] * defect * JxW;
         }
       }
-      for (const auto &face : cell->face_iterators ())
-      {
-        if (!face->at_boundary () ||
-            !(s.boundaries.is (face->boundary_id (), BoundaryType::inlet) ||
-              s.boundaries.is (face->boundary_id (), BoundaryType::outlet)))
-          continue;
-        flow_face.reinit (cell, face);
-        alpha_face.reinit (alpha_cell, face);
-        alpha_face.get_function_values (s.alpha, a_face);
-        for (unsigned int k = 0; k < 2; ++k)
-        {
-          flow_face[velocity[k]].get_function_values (s.flow_solution, u_face);
-          for (unsigned int q = 0; q < face_quadrature.size (); ++q)
-            budget.momentum_outflow +=
-                density[k] * fraction (k, a_face[q]) * (u_face[q] * up) *
-                (u_face[q] * flow_face.normal_vector (q)) * flow_face.JxW (q);
-        }
-      }
+      add_momentum_outflow (
+          s, cell, alpha_cell, flow_face, alpha_face, budget.momentum_outflow);
     }
     ++alpha_cell;
   }

@@ -76,7 +76,64 @@ double centre_of (const unsigned int k, const unsigned int n)
 {
   return (k + 0.5) / n;
 }
+/** The rows' directions of the velocity components: radial, azimuthal and axial at
+ * `point` for a radial profile (`radial`), else the Cartesian axes. */
+template <int dim>
+Tensor<2, dim> velocity_basis (const bool                  radial_profile,
+                               const Point<dim>           &point,
+                               const HorizontalFrame<dim> &frame)
+{
+  Tensor<2, dim> basis;
+  if (radial_profile)
+  {
+    Tensor<1, dim> radial  = point - column_axis (frame);
+    radial[frame.vertical] = 0;
+    radial /= radial.norm ();
+    basis[0] = radial;
+    if (dim == 3)
+    {
+      basis[1][frame.across[0]]             = -radial[frame.across[1 % (dim - 1)]];
+      basis[1][frame.across[1 % (dim - 1)]] = radial[frame.across[0]];
+    }
+    basis[dim - 1][frame.vertical] = frame.up;
+  }
+  else
+    for (unsigned int d = 0; d < dim; ++d)
+      basis[d][d] = 1;
+  return basis;
+}
 } // namespace
+
+/** The position columns of a bin whose first point is `first` (`start`: the profile's
+ * first point): the radius, the lateral coordinate, or the distance along the line and
+ * the coordinates. */
+template <int dim>
+void Profiles<dim>::write_position (std::ostream               &out,
+                                    const Kind                  kind,
+                                    const Point<dim>           &first,
+                                    const Point<dim>           &start,
+                                    const HorizontalFrame<dim> &frame)
+{
+  switch (kind)
+  {
+  case Kind::radial:
+  {
+    Tensor<1, dim> radial  = first - column_axis (frame);
+    radial[frame.vertical] = 0;
+    out << ',' << radial.norm ();
+    break;
+  }
+  case Kind::lateral:
+    out << ',' << first[frame.across[0]];
+    break;
+  case Kind::line:
+    out << ',' << first.distance (start);
+    [[fallthrough]];
+  case Kind::plane:
+    for (unsigned int d = 0; d < dim; ++d)
+      out << ',' << first[d];
+  }
+}
 
 template <int dim>
 Profiles<dim>::Profiles (const StatisticsParameters &parameters)
@@ -263,24 +320,8 @@ std::string Profiles<dim>::rows (Profile &profile, const SolverState<dim> &s) co
     v.push_back (flow[i][2 * dim]);
     if (averages)
       v.push_back (flow_m2[i][2 * dim] / weight);
-    // radial profiles: velocities in the radial, azimuthal and axial directions
-    Tensor<2, dim> basis;
-    if (profile.kind == Kind::radial)
-    {
-      Tensor<1, dim> radial  = points[i] - column_axis (frame);
-      radial[frame.vertical] = 0;
-      radial /= radial.norm ();
-      basis[0] = radial;
-      if (dim == 3)
-      {
-        basis[1][frame.across[0]]             = -radial[frame.across[1 % (dim - 1)]];
-        basis[1][frame.across[1 % (dim - 1)]] = radial[frame.across[0]];
-      }
-      basis[dim - 1][frame.vertical] = frame.up;
-    }
-    else
-      for (unsigned int d = 0; d < dim; ++d)
-        basis[d][d] = 1;
+    const Tensor<2, dim> basis =
+        velocity_basis (profile.kind == Kind::radial, points[i], frame);
     for (const unsigned int phase : {0u, 1u})
       for (unsigned int d = 0; d < dim; ++d)
       {
@@ -328,27 +369,8 @@ std::string Profiles<dim>::rows (Profile &profile, const SolverState<dim> &s) co
       for (unsigned int c = 5 + 2 * dim; c < sum.size (); ++c)
         sum[c] = std::sqrt (std::max (sum[c], 0.0));
     }
-    const Point<dim> &first = points[b * profile.per_bin];
     out << std::setprecision (12) << s.time;
-    switch (profile.kind)
-    {
-    case Kind::radial:
-    {
-      Tensor<1, dim> radial  = first - column_axis (frame);
-      radial[frame.vertical] = 0;
-      out << ',' << radial.norm ();
-      break;
-    }
-    case Kind::lateral:
-      out << ',' << first[frame.across[0]];
-      break;
-    case Kind::line:
-      out << ',' << first.distance (points[0]);
-      [[fallthrough]];
-    case Kind::plane:
-      for (unsigned int d = 0; d < dim; ++d)
-        out << ',' << first[d];
-    }
+    write_position (out, profile.kind, points[b * profile.per_bin], points[0], frame);
     for (const double x : sum)
       out << ',' << x;
     out << '\n';

@@ -331,6 +331,72 @@ auto MatrixFreeFlowOperator<dim>::kernel_table (std::index_sequence<flags...>)
   return {{&MatrixFreeFlowOperator<dim>::template apply_cells_kernel<flags>...}};
 }
 
+namespace
+{
+/** The bilinear form at one quadrature point of a cell batch (doc/theory.md,
+ * "Matrix-free flow operator"): from the velocities' values and gradients and the
+ * pressure read (`u_in`, `p_in`), the values and gradients submitted to the momentum
+ * rows and the continuity row (`u_out`, `p_out`), with the point's coefficients `c`. */
+template <int  dim,
+          bool u_in,
+          bool p_in,
+          bool u_out,
+          bool p_out,
+          typename Data,
+          typename VA>
+DEAL_II_ALWAYS_INLINE inline void
+cell_point_kernel (const Data                                   &c,
+                   const Tensor<1, 2 * dim, VA>                 &value,
+                   const Tensor<1, 2 * dim, Tensor<1, dim, VA>> &grad,
+                   const VA                                      pressure,
+                   Tensor<1, 2 * dim, VA>                       &value_out,
+                   Tensor<1, 2 * dim, Tensor<1, dim, VA>>       &grad_out,
+                   VA                                           &continuity)
+{
+  for (unsigned int k = 0; k < 2; ++k)
+  {
+    const unsigned int o = k * dim, other = (1 - k) * dim;
+    const VA           fraction = k == 0 ? VA (1.0) - c.alpha_s : c.alpha_s;
+    const double       sign     = k == 0 ? -1.0 : 1.0; // grad f_k = sign grad alpha_s
+    if constexpr (u_in)
+    {
+      VA                 divergence = 0.0;
+      Tensor<1, dim, VA> convective;
+      for (unsigned int d = 0; d < dim; ++d)
+      {
+        divergence += grad[o + d][d];
+        for (unsigned int e = 0; e < dim; ++e)
+          convective[d] += grad[o + d][e] * c.advection[k][e];
+      }
+      if constexpr (u_out)
+        for (unsigned int d = 0; d < dim; ++d)
+        {
+          value_out[o + d] = c.mass[k] * value[o + d] + c.inertia[k] * convective[d] +
+                             c.drag * (value[o + d] - value[other + d]);
+          const VA supg = c.supg[k] * convective[d];
+          for (unsigned int e = 0; e < dim; ++e)
+            grad_out[o + d][e] = c.viscosity[k] * (grad[o + d][e] + grad[o + e][d]) +
+                                 supg * c.advection[k][e];
+          grad_out[o + d][d] += c.bulk[k] * divergence;
+        }
+      if constexpr (p_out)
+      {
+        VA grad_fraction_u = 0.0;
+        for (unsigned int d = 0; d < dim; ++d)
+          grad_fraction_u += c.grad_alpha_s[d] * value[o + d];
+        continuity -= fraction * divergence + sign * grad_fraction_u;
+      }
+    }
+    if constexpr (p_in && u_out)
+      for (unsigned int d = 0; d < dim; ++d)
+      {
+        value_out[o + d] -= sign * pressure * c.grad_alpha_s[d];
+        grad_out[o + d][d] -= pressure * fraction;
+      }
+  }
+}
+} // namespace
+
 template <int dim>
 template <unsigned int flags>
 void MatrixFreeFlowOperator<dim>::apply_cells_kernel (LocalVector       *dst_velocity,
@@ -389,49 +455,8 @@ void MatrixFreeFlowOperator<dim>::apply_cells_kernel (LocalVector       *dst_vel
         Tensor<1, 2 * dim, VA>                 value_out;
         Tensor<1, 2 * dim, Tensor<1, dim, VA>> grad_out;
         VA                                     continuity = 0.0;
-        for (unsigned int k = 0; k < 2; ++k)
-        {
-          const unsigned int o = k * dim, other = (1 - k) * dim;
-          const VA           fraction = k == 0 ? VA (1.0) - c.alpha_s : c.alpha_s;
-          const double       sign = k == 0 ? -1.0 : 1.0; // grad f_k = sign grad alpha_s
-          if constexpr (u_in)
-          {
-            VA                 divergence = 0.0;
-            Tensor<1, dim, VA> convective;
-            for (unsigned int d = 0; d < dim; ++d)
-            {
-              divergence += grad[o + d][d];
-              for (unsigned int e = 0; e < dim; ++e)
-                convective[d] += grad[o + d][e] * c.advection[k][e];
-            }
-            if constexpr (u_out)
-              for (unsigned int d = 0; d < dim; ++d)
-              {
-                value_out[o + d] = c.mass[k] * value[o + d] +
-                                   c.inertia[k] * convective[d] +
-                                   c.drag * (value[o + d] - value[other + d]);
-                const VA supg = c.supg[k] * convective[d];
-                for (unsigned int e = 0; e < dim; ++e)
-                  grad_out[o + d][e] =
-                      c.viscosity[k] * (grad[o + d][e] + grad[o + e][d]) +
-                      supg * c.advection[k][e];
-                grad_out[o + d][d] += c.bulk[k] * divergence;
-              }
-            if constexpr (p_out)
-            {
-              VA grad_fraction_u = 0.0;
-              for (unsigned int d = 0; d < dim; ++d)
-                grad_fraction_u += c.grad_alpha_s[d] * value[o + d];
-              continuity -= fraction * divergence + sign * grad_fraction_u;
-            }
-          }
-          if constexpr (p_in && u_out)
-            for (unsigned int d = 0; d < dim; ++d)
-            {
-              value_out[o + d] -= sign * pressure * c.grad_alpha_s[d];
-              grad_out[o + d][d] -= pressure * fraction;
-            }
-        }
+        cell_point_kernel<dim, u_in, p_in, u_out, p_out> (
+            c, value, grad, pressure, value_out, grad_out, continuity);
         if constexpr (u_out)
         {
           u.submit_value (value_out, q);
@@ -449,6 +474,24 @@ void MatrixFreeFlowOperator<dim>::apply_cells_kernel (LocalVector       *dst_vel
 }
 
 template <int dim>
+void MatrixFreeFlowOperator<dim>::mark_active_face_batches () const
+{
+  const unsigned int n_fq      = Utilities::pow (n_q_1d, dim - 1);
+  const unsigned int n_batches = matrix_free.n_boundary_face_batches ();
+  face_batch_active.assign (n_batches, false);
+  for (unsigned int batch = 0; batch < n_batches; ++batch)
+    for (unsigned int q = 0; q < n_fq; ++q)
+    {
+      const FaceData &c = face_data[batch * n_fq + q];
+      for (unsigned int lane = 0; lane < VA::size (); ++lane)
+        face_batch_active[batch] = face_batch_active[batch] || c.backflow[lane] != 0.0 ||
+                                   c.friction[0][lane] != 0.0 ||
+                                   c.friction[1][lane] != 0.0 ||
+                                   c.slips[0][lane] != 0.0 || c.slips[1][lane] != 0.0;
+    }
+}
+
+template <int dim>
 void MatrixFreeFlowOperator<dim>::apply_boundary_faces (LocalVector       *dst_velocity,
                                                         LocalVector       *dst_pressure,
                                                         const LocalVector *src_velocity,
@@ -459,19 +502,7 @@ void MatrixFreeFlowOperator<dim>::apply_boundary_faces (LocalVector       *dst_v
   const unsigned int first     = matrix_free.n_inner_face_batches ();
   const unsigned int n_batches = matrix_free.n_boundary_face_batches ();
   if (face_batch_active.size () != n_batches)
-  {
-    face_batch_active.assign (n_batches, false);
-    for (unsigned int batch = 0; batch < n_batches; ++batch)
-      for (unsigned int q = 0; q < n_fq; ++q)
-      {
-        const FaceData &c = face_data[batch * n_fq + q];
-        for (unsigned int lane = 0; lane < VA::size (); ++lane)
-          face_batch_active[batch] =
-              face_batch_active[batch] || c.backflow[lane] != 0.0 ||
-              c.friction[0][lane] != 0.0 || c.friction[1][lane] != 0.0 ||
-              c.slips[0][lane] != 0.0 || c.slips[1][lane] != 0.0;
-      }
-  }
+    mark_active_face_batches ();
   const auto [read, write] = dof_indices (layout);
   using VelocityEvaluation =
       FEFaceEvaluation<dim, velocity_degree, n_q_1d, 2 * dim, double>;

@@ -412,36 +412,43 @@ void TwoFluidSolver<dim>::set_initial_state ()
   if (const Function<dim> *exact = verification->exact_flow ())
     VectorTools::interpolate (mapping, flow_dof_handler, *exact, owned_flow);
   else if (ic.gas_at_inlet_velocity)
-  {
-    // u_g = U/alpha_g (the superficial velocity carried by the local gas fraction)
-    const double                         U           = inlet_superficial_velocity (0.0);
-    const double                         alpha_g_bed = 1.0 - ic.bed_solids_fraction;
-    const double                         alpha_g_top = 1.0 - ic.freeboard_solids_fraction;
-    std::vector<types::global_dof_index> flow_dofs (flow_fe.n_dofs_per_cell ());
-    const auto                          &support = flow_fe.get_unit_support_points ();
-    for (const auto &cell : flow_dof_handler.active_cell_iterators ())
-      if (cell->is_locally_owned ())
-      {
-        cell->get_dof_indices (flow_dofs);
-        for (unsigned int i = 0; i < flow_dofs.size (); ++i)
-        {
-          const unsigned int c = flow_fe.system_to_component_index (i).first;
-          if (c >= dim || !owned_flow.in_local_range (flow_dofs[i]))
-            continue;
-          const Point<dim> x = mapping.transform_unit_to_real_cell (cell, support[i]);
-          const double     height   = (x - origin) * up;
-          const double     ag       = height <= ic.bed_height ? alpha_g_bed : alpha_g_top;
-          owned_flow (flow_dofs[i]) = U / ag * up[c];
-        }
-      }
-    owned_flow.compress (VectorOperation::insert);
-  }
+    gas_at_inlet_velocity (owned_flow);
   flow_constraints.distribute (owned_flow);
   flow_solution = owned_flow;
   flow_old      = owned_flow;
   flow_old2     = owned_flow;
 
   initial_solids_mass = state ().solids_mass (alpha);
+}
+
+template <int dim>
+void TwoFluidSolver<dim>::gas_at_inlet_velocity (BlockVector &owned_flow) const
+{
+  const auto          &ic = parameters.initial;
+  const Tensor<1, dim> up = upward_direction<dim> (parameters.physical.gravity);
+  const Point<dim>     origin;
+  // u_g = U/alpha_g (the superficial velocity carried by the local gas fraction)
+  const double                         U           = inlet_superficial_velocity (0.0);
+  const double                         alpha_g_bed = 1.0 - ic.bed_solids_fraction;
+  const double                         alpha_g_top = 1.0 - ic.freeboard_solids_fraction;
+  std::vector<types::global_dof_index> flow_dofs (flow_fe.n_dofs_per_cell ());
+  const auto                          &support = flow_fe.get_unit_support_points ();
+  for (const auto &cell : flow_dof_handler.active_cell_iterators ())
+    if (cell->is_locally_owned ())
+    {
+      cell->get_dof_indices (flow_dofs);
+      for (unsigned int i = 0; i < flow_dofs.size (); ++i)
+      {
+        const unsigned int c = flow_fe.system_to_component_index (i).first;
+        if (c >= dim || !owned_flow.in_local_range (flow_dofs[i]))
+          continue;
+        const Point<dim> x      = mapping.transform_unit_to_real_cell (cell, support[i]);
+        const double     height = (x - origin) * up;
+        const double     ag     = height <= ic.bed_height ? alpha_g_bed : alpha_g_top;
+        owned_flow (flow_dofs[i]) = U / ag * up[c];
+      }
+    }
+  owned_flow.compress (VectorOperation::insert);
 }
 
 template <int dim>

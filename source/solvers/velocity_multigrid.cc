@@ -177,21 +177,55 @@ Tensor<2, dim> face_block (const FlowFacePointCoefficients<dim> &c,
     }
   return block;
 }
+/** The point sums of a cell's coarse (Q1) bilinear form, per phase k: the gradient
+ * products G_c[(a, i), (b, j)] = sum_q c_q d_i phi_a d_j phi_b for c = mu_k (shear) and
+ * lambda_k (bulk), the scalar part S_k(a, b), and the drag D(a, b). */
+template <int dim>
+struct CoarseCellSums
+{
+  static constexpr unsigned int max_n1 = GeometryInfo<dim>::vertices_per_cell,
+                                max_g  = max_n1 * dim;
+  std::array<std::array<double, max_g * max_g>, 2>   shear{}, bulk{};
+  std::array<std::array<double, max_n1 * max_n1>, 2> scalar{};
+  std::array<double, max_n1 * max_n1>                drag{};
+
+  /** Into the 2 dim n1 x 2 dim n1 matrix: row (o + d, a), column (o + e, b) of phase k
+   * gets G_mu[(a, e), (b, d)] + G_lambda[(a, d), (b, e)], its diagonal blocks d = e
+   * also S_k(a, b) + sum_i G_mu[(a, i), (b, i)], the other phase's block -D(a, b). */
+  void scatter (const unsigned int n1, FullMatrix<double> &coarse) const
+  {
+    const unsigned int ng = n1 * dim;
+    for (unsigned int k = 0; k < 2; ++k)
+    {
+      const unsigned int o = k * dim, other = (1 - k) * dim;
+      for (unsigned int a = 0; a < n1; ++a)
+        for (unsigned int b = 0; b < n1; ++b)
+        {
+          double same = scalar[k][a * n1 + b];
+          for (unsigned int i = 0; i < dim; ++i)
+            same += shear[k][(a * dim + i) * ng + b * dim + i];
+          for (unsigned int d = 0; d < dim; ++d)
+          {
+            const unsigned int row = (o + d) * n1 + a;
+            for (unsigned int e = 0; e < dim; ++e)
+              coarse (row, (o + e) * n1 + b) +=
+                  shear[k][(a * dim + e) * ng + b * dim + d] +
+                  bulk[k][(a * dim + d) * ng + b * dim + e];
+            coarse (row, (o + d) * n1 + b) += same;
+            coarse (row, (other + d) * n1 + b) -= drag[a * n1 + b];
+          }
+        }
+    }
+  }
+};
 } // namespace
 
 template <int dim>
-void VelocityMultigrid<dim>::local_cell (
-    const FlowCell                                &cell,
-    const FlowCellScratch<dim>                    &s,
-    const std::vector<FlowPointCoefficients<dim>> &values,
-    LocalData                                     &local) const
+void VelocityMultigrid<dim>::cell_dof_indices (const FlowCell    &cell,
+                                               const unsigned int n1,
+                                               const unsigned int n2,
+                                               LocalData         &local) const
 {
-  // the coarse basis is the assembly's Q1 pressure basis, the fine one its Q2 velocity
-  // basis (the same mapping and quadrature); DoF (c, a) of either at c * n + a
-  const unsigned int n1 = s.indices.n_pressure_basis, n2 = s.indices.n_velocity_basis;
-  local.matrices[0].reinit (coarse_pending ? 2 * dim * n1 : 0,
-                            coarse_pending ? 2 * dim * n1 : 0);
-  local.vectors[0].reinit (2 * dim * 2 * dim * n2);
   local.local_dof_indices[0].resize (2 * dim * n1);
   local.local_dof_indices[1].resize (2 * dim * n2);
   const typename DoFHandler<dim>::active_cell_iterator coarse_cell (
@@ -212,6 +246,22 @@ void VelocityMultigrid<dim>::local_cell (
       local.local_dof_indices[1][c * n2 + a] =
           fine_system[fine_fe.component_to_system_index (c, a)];
   }
+}
+
+template <int dim>
+void VelocityMultigrid<dim>::local_cell (
+    const FlowCell                                &cell,
+    const FlowCellScratch<dim>                    &s,
+    const std::vector<FlowPointCoefficients<dim>> &values,
+    LocalData                                     &local) const
+{
+  // the coarse basis is the assembly's Q1 pressure basis, the fine one its Q2 velocity
+  // basis (the same mapping and quadrature); DoF (c, a) of either at c * n + a
+  const unsigned int n1 = s.indices.n_pressure_basis, n2 = s.indices.n_velocity_basis;
+  local.matrices[0].reinit (coarse_pending ? 2 * dim * n1 : 0,
+                            coarse_pending ? 2 * dim * n1 : 0);
+  local.vectors[0].reinit (2 * dim * 2 * dim * n2);
+  cell_dof_indices (cell, n1, n2, local);
 
   // the cell bilinear form within phase k between phi_a e_d (test) and phi_b e_e
   // (trial): [(mass_k + drag) phi_a phi_b + inertia_k phi_a (a_k.grad phi_b)
@@ -219,22 +269,20 @@ void VelocityMultigrid<dim>::local_cell (
   // + mu_k d_d phi_b d_e phi_a + lambda_k d_e phi_b d_d phi_a, and -drag phi_a phi_b to
   // the other phase's component d; the weight folded into the coefficients.
   // On the coarse (Q1) basis the point sums are taken first, into dense arrays whose
-  // inner loops vectorise: per phase the gradient products
-  // G_c[(a, i), (b, j)] = sum_q c_q d_i phi_a d_j phi_b for c = mu_k and lambda_k, the
-  // scalar part S_k(a, b) and the drag D(a, b); they are scattered into the
-  // 2 dim n1 x 2 dim n1 matrix once per cell
-  FullMatrix<double>    &coarse = local.matrices[0];
+  // inner loops vectorise (CoarseCellSums), scattered into the 2 dim n1 x 2 dim n1
+  // matrix once per cell
   Vector<double>        &blocks = local.vectors[0];
   constexpr unsigned int max_n1 = GeometryInfo<dim>::vertices_per_cell,
                          max_g  = max_n1 * dim;
   AssertThrow (n1 == max_n1 && n2 <= 27, ExcInternalError ());
-  const unsigned int                                 ng = n1 * dim;
-  std::array<std::array<double, max_g * max_g>, 2>   shear{}, bulk_sum{};
-  std::array<std::array<double, max_n1 * max_n1>, 2> scalar{};
-  std::array<double, max_n1 * max_n1>                drag_sum{};
-  std::array<double, max_g>                          gradients;
-  std::array<double, max_n1>                         advective_p;
-  std::array<double, 27>                             advective_v;
+  const unsigned int         ng = n1 * dim;
+  CoarseCellSums<dim>        sums;
+  auto                      &shear = sums.shear, &bulk_sum = sums.bulk;
+  auto                      &scalar   = sums.scalar;
+  auto                      &drag_sum = sums.drag;
+  std::array<double, max_g>  gradients;
+  std::array<double, max_n1> advective_p;
+  std::array<double, 27>     advective_v;
   for (unsigned int q = 0; q < s.JxW.size (); ++q)
   {
     const FlowPointCoefficients<dim> &c     = values[q];
@@ -298,30 +346,8 @@ void VelocityMultigrid<dim>::local_cell (
       }
     }
   }
-  // the coarse matrix: row (o + d, a), column (o + e, b) of phase k gets
-  // G_mu[(a, e), (b, d)] + G_lambda[(a, d), (b, e)], its diagonal blocks d = e also
-  // S_k(a, b) + sum_i G_mu[(a, i), (b, i)], the other phase's block -D(a, b)
-  for (unsigned int k = 0; k < 2 && coarse_pending; ++k)
-  {
-    const unsigned int o = k * dim, other = (1 - k) * dim;
-    for (unsigned int a = 0; a < n1; ++a)
-      for (unsigned int b = 0; b < n1; ++b)
-      {
-        double same = scalar[k][a * n1 + b];
-        for (unsigned int i = 0; i < dim; ++i)
-          same += shear[k][(a * dim + i) * ng + b * dim + i];
-        for (unsigned int d = 0; d < dim; ++d)
-        {
-          const unsigned int row = (o + d) * n1 + a;
-          for (unsigned int e = 0; e < dim; ++e)
-            coarse (row, (o + e) * n1 + b) +=
-                shear[k][(a * dim + e) * ng + b * dim + d] +
-                bulk_sum[k][(a * dim + d) * ng + b * dim + e];
-          coarse (row, (o + d) * n1 + b) += same;
-          coarse (row, (other + d) * n1 + b) -= drag_sum[a * n1 + b];
-        }
-      }
-  }
+  if (coarse_pending)
+    sums.scatter (n1, local.matrices[0]);
 }
 
 template <int dim>

@@ -121,6 +121,12 @@ private:
                               const std::vector<dealii::types::global_dof_index> &dofs,
                               const AlphaVector                                  &alpha,
                               std::vector<double> &slopes) const;
+  /** alpha corrected by the edge fluxes of the nodal pressure increment w = S z
+   * (`increment`: z), limited by `transport`. */
+  void apply_pressure_increment (const closures::ClosureEvaluator            &closures,
+                                 const dealii::TrilinosWrappers::MPI::Vector &increment,
+                                 AlphaVector                                 &alpha,
+                                 VolumeFractionTransport<dim> &transport) const;
   /** z of the correction by CG: point Jacobi, AMG where Jacobi is slow. */
   void solve_correction (const dealii::TrilinosWrappers::MPI::Vector &rhs,
                          dealii::TrilinosWrappers::MPI::Vector       &increment,

@@ -95,6 +95,37 @@ public:
 
 private:
   double last_required_sub_steps = 0;
+  using EdgeValues = std::vector<std::vector<double>>; // [owned row][column of the row]
+
+  /** The low-order artificial diffusion d_ij = max(-k_ij, 0, -k_ji) of each row into
+   * `diffusion`; returns this rank's largest stable explicit step. */
+  double artificial_diffusion (EdgeValues &diffusion) const;
+  /** One low-order sub-step of length tau from `alpha` (ghosted) as antisymmetric edge
+   * fluxes into `low_flux`, and its result into `low`. */
+  void low_order_step (const Vector     &alpha,
+                       const EdgeValues &diffusion,
+                       double            tau,
+                       EdgeValues       &low_flux,
+                       Vector           &low) const;
+  /** The prelimited antidiffusive fluxes into `flux` and Zalesak's ratios R+ and R- into
+   * `r_plus`, `r_minus`, keeping each node within its neighbours' range and [0,
+   * alpha_max]. */
+  void antidiffusive_fluxes (const Vector     &alpha,
+                             const Vector     &low,
+                             const EdgeValues &diffusion,
+                             double            tau,
+                             double            alpha_max,
+                             EdgeValues       &flux,
+                             Vector           &r_plus,
+                             Vector           &r_minus) const;
+  /** flux_ij = low_flux_ij + l_ij flux_ij with Zalesak's limiter from ghosted `r_plus`,
+   * `r_minus`; the removed and the total antidiffusive flux added up. */
+  void limit_antidiffusive_fluxes (const EdgeValues &low_flux,
+                                   const Vector     &r_plus,
+                                   const Vector     &r_minus,
+                                   EdgeValues       &flux,
+                                   double           &removed,
+                                   double           &total) const;
 
   /** alpha_i += sum_j l_ij G_ij / m_i with l_ij keeping [0, alpha_max]; returns held-back
    * volume. */

@@ -74,6 +74,12 @@ private:
 
   const Group &group (dealii::types::boundary_id id) const;
   double       speed (const Group &g, const dealii::Point<dim> &x, double t) const;
+  /** The inlet group of boundary `b` with its direction and its velocity U(x, t) or
+   * mass flow m(t) from the parameters (the common U(t) where it has none). */
+  Group make_group (const Boundary &b) const;
+  /** An InputError naming the group and its parameter where its speed is not finite at
+   * one of 51 times up to the end time on its faces' points. */
+  void check_speeds (const Group &g) const;
 
   const BoundaryConditionParameters &parameters;
   double                             gas_density, end_time;

@@ -50,6 +50,18 @@ private:
   /** The files of one output (VTU pieces and record, HDF5 and the XDMF index), each
    * checked complete. */
   void write_files (const dealii::DataOut<dim> &data_out, double time, MPI_Comm comm);
+  /** Room for one output of `data_out` in the output folder, estimated from its patches
+   * and what the last output took (an error naming output/folder where it lacks);
+   * returns the estimate. */
+  double check_room (const dealii::DataOut<dim> &data_out,
+                     const std::string          &stem,
+                     double                      time,
+                     MPI_Comm                    comm) const;
+  /** The XDMF index of the complete outputs and `entry`, rewritten beside the old one
+   * and renamed over it once whole; false where that failed (collective). */
+  bool write_xdmf_index (const dealii::DataOut<dim> &data_out,
+                         const dealii::XDMFEntry    &entry,
+                         MPI_Comm                    comm);
 
   const Parameters    &parameters;
   dealii::TimerOutput &timer;

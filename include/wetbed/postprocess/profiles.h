@@ -63,6 +63,11 @@ private:
   std::string header (const Profile &profile) const;
   /** The rows of `profile` for `state` (rank 0; empty elsewhere); collective. */
   std::string rows (Profile &profile, const SolverState<dim> &state) const;
+  static void write_position (std::ostream               &out,
+                              Kind                        kind,
+                              const dealii::Point<dim>   &first,
+                              const dealii::Point<dim>   &start,
+                              const HorizontalFrame<dim> &frame);
 
   StatisticsParameters                  parameters;
   std::vector<std::unique_ptr<Profile>> profiles;

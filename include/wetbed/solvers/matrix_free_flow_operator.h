@@ -187,6 +187,8 @@ private:
                              const LocalVector *src_u,
                              const LocalVector *src_p,
                              Layout             layout = Layout::constrained) const;
+  /** Which boundary face batches any boundary term acts on (face_batch_active). */
+  void mark_active_face_batches () const;
   /** Where each locally owned cell and boundary face sits in the batches. */
   void find_batch_places ();
   void build_maps (const dealii::DoFHandler<dim>           &flow_dof_handler,

@@ -135,6 +135,8 @@ private:
   void make_schur_constraints (const dealii::IndexSet         &relevant,
                                dealii::types::global_dof_index pinned);
   void set_initial_state ();
+  /** `initial conditions`' gas velocity U/alpha_g against gravity, into `owned_flow`. */
+  void gas_at_inlet_velocity (BlockVector &owned_flow) const;
   /** The fields a mesh change or a checkpoint carries, in their fixed order. */
   TransferredFields<dim> transferred_fields ();
   /** Adapts the mesh (MeshAdaptation), moves every field and its history with it

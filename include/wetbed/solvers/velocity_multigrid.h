@@ -116,6 +116,12 @@ private:
       dealii::PreconditionChebyshev<VelocityBlock, LocalVector, NodeBlockJacobi>;
 
   void make_coarse_constraints ();
+  /** The coarse (Q1) and fine (Q2) velocity DoFs of `cell` into `local`, DoF (c, a) of
+   * either at c n + a (n: the scalar basis size). */
+  void cell_dof_indices (const FlowCell &cell,
+                         unsigned int    n1,
+                         unsigned int    n2,
+                         LocalData      &local) const;
 
   const LinearSolverParameters                &parameters;
   const bool                                   exact_coarse;
