@@ -6,7 +6,7 @@
 // CMake's WETBED_SIMD is on: the width is raised to what the compiler's target
 // (-march=native) offers before numbers.h and vectorization.h are read, in every
 // translation unit alike. The MatrixFree classes for that width, which the library does
-// not hold, are instantiated by source/solvers/matrix_free_instantiation.cc.
+// not hold, are instantiated at the end of source/solvers/matrix_free_flow_operator.cc.
 #ifndef wetbed_deal_ii_simd_numbers_h
 #define wetbed_deal_ii_simd_numbers_h
 
