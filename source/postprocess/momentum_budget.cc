@@ -182,7 +182,7 @@ InertialBudget evaluate_inertial_budget (const SolverState<dim> &s)
           // C - A, A the assembled form (see above)
           const double defect =
               continuity_defect<dim> (form,
-                                      {fraction_new, fraction_old, fraction_lag},
+                                      {{fraction_new, fraction_old, fraction_lag}},
                                       divergence,
                                       u_up,
                                       u_old[q] * up,
