@@ -42,15 +42,28 @@ end
     return prm, folder, os.path.join(work, name + ".log")
 
 
-def run_resumable(command, folder, log, wall_file, resumable=True, env=None):
+def last_time(folder):
+    """The time of the last row of FOLDER/monitors.csv (0 without one)."""
+    path = os.path.join(folder, "monitors.csv")
+    if not os.path.exists(path):
+        return 0.0
+    rows = open(path).read().split("\n")
+    rows = [r for r in rows[1:] if r.strip()]
+    return float(rows[-1].split(",")[1]) if rows else 0.0
+
+
+def run_resumable(command, folder, log, wall_file, resumable=True, env=None, end_time=None):
     """Runs COMMAND (a wetbed call, optionally under mpirun) with its screen output in LOG.
     With RESUMABLE, a run that has a checkpoint in FOLDER and a WALL_FILE from an earlier
     piece is continued (`--resume`, the log appended) and WALL_FILE keeps the wall time of
     all pieces, updated every 5 s so that an interrupted piece still counts; a run whose
-    log already says `Finished:` is not started again. Returns (exit code, total wall s)."""
+    log already says `Finished:` is not started again, unless END_TIME lies beyond the
+    last row of its monitors.csv (then it is continued to END_TIME from its last
+    checkpoint). Returns (exit code, total wall s)."""
     import subprocess
     import time
-    if resumable and os.path.exists(wall_file) and os.path.exists(log) and "Finished:" in open(log).read():
+    finished = resumable and os.path.exists(wall_file) and os.path.exists(log) and "Finished:" in open(log).read()
+    if finished and (end_time is None or last_time(folder) >= end_time - 1e-9):
         return 0, float(open(wall_file).read())
     resume = resumable and os.path.isdir(os.path.join(folder, "checkpoint")) and os.path.exists(wall_file)
     earlier = float(open(wall_file).read()) if resume else 0.0

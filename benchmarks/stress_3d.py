@@ -84,7 +84,8 @@ def run_3d_cases(root, work, args, env):
                                       sections + "subsection checkpoint\n set wall time interval = 600\nend\n",
                                       field_interval=1000, progress_interval=50)
         command = ["mpirun", "--oversubscribe", "-np", "2", os.path.join(root, "build", "wetbed"), prm]
-        code, wall = run_resumable(command, folder, log, os.path.join(work, name + ".wall"), True, env)
+        code, wall = run_resumable(command, folder, log, os.path.join(work, name + ".wall"), True, env,
+                                   args.end_time_3d)
         result = record(label, folder, log, code, wall, args.end_time_3d)
         json.dump(result, open(os.path.join(results, name + ".json"), "w"), indent=1)
         print(f"{label}: {result['outcome']}, t = {result['reached']:.4g} s", flush=True)

@@ -1,3 +1,4 @@
+#include <wetbed/assembly/scalar_sparsity.h>
 #include <wetbed/assembly/solids_pressure_correction.h>
 #include <wetbed/core/interruptible_solver_control.h>
 
@@ -6,7 +7,6 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/solver_cg.h>
-#include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/lac/trilinos_precondition.h>
 
 #include <algorithm>
@@ -62,13 +62,9 @@ void SolidsPressureCorrection<dim>::reinit (
     const AlphaVector               &layout)
 {
   alpha_momentum.reinit (layout);
-  const IndexSet alpha_owned = alpha_dof_handler.locally_owned_dofs ();
-  const IndexSet alpha_relevant =
-      DoFTools::extract_locally_relevant_dofs (alpha_dof_handler);
-  DynamicSparsityPattern dsp (alpha_relevant);
-  DoFTools::make_sparsity_pattern (alpha_dof_handler, dsp, alpha_constraints, false);
-  SparsityTools::distribute_sparsity_pattern (
-      dsp, alpha_owned, communicator, alpha_relevant);
+  const IndexSet              &alpha_owned = alpha_dof_handler.locally_owned_dofs ();
+  const DynamicSparsityPattern dsp =
+      distributed_scalar_sparsity (alpha_dof_handler, alpha_constraints);
   correction_matrix.reinit (alpha_owned, alpha_owned, dsp, communicator);
   compaction_flux_matrix.reinit (alpha_owned, alpha_owned, dsp, communicator);
 }

@@ -1,3 +1,4 @@
+#include <wetbed/assembly/scalar_sparsity.h>
 #include <wetbed/assembly/volume_fraction_transport.h>
 
 #include <deal.II/base/mpi.h>
@@ -5,7 +6,6 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/lac/trilinos_index_access.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
@@ -27,10 +27,8 @@ void VolumeFractionTransport<dim>::setup (
   const MPI_Comm  comm     = dof_handler.get_triangulation ().get_communicator ();
   const IndexSet &owned    = dof_handler.locally_owned_dofs ();
   const IndexSet  relevant = DoFTools::extract_locally_relevant_dofs (dof_handler);
-
-  DynamicSparsityPattern dsp (relevant);
-  DoFTools::make_sparsity_pattern (dof_handler, dsp, hanging_node_constraints, false);
-  SparsityTools::distribute_sparsity_pattern (dsp, owned, comm, relevant);
+  const DynamicSparsityPattern dsp =
+      distributed_scalar_sparsity (dof_handler, hanging_node_constraints);
 
   this->dof_handler = &dof_handler;
   this->mapping     = &mapping;

@@ -1,11 +1,10 @@
+#include <wetbed/assembly/scalar_sparsity.h>
 #include <wetbed/core/interruptible_solver_control.h>
 #include <wetbed/solvers/granular_energy_solver.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/dofs/dof_tools.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/solver_gmres.h>
-#include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/lac/trilinos_precondition.h>
 
 #include <algorithm>
@@ -46,14 +45,11 @@ void GranularEnergySolver<dim>::reinit (
 {
   if (parameters.kinetic_theory.algebraic)
     return; // no matrix
-  const IndexSet alpha_owned = alpha_dof_handler.locally_owned_dofs ();
-  const IndexSet alpha_relevant =
-      DoFTools::extract_locally_relevant_dofs (alpha_dof_handler);
-  DynamicSparsityPattern dsp (alpha_relevant);
-  DoFTools::make_sparsity_pattern (alpha_dof_handler, dsp, alpha_constraints, false);
-  SparsityTools::distribute_sparsity_pattern (
-      dsp, alpha_owned, communicator, alpha_relevant);
-  matrix.reinit (alpha_owned, alpha_owned, dsp, communicator);
+  const IndexSet &alpha_owned = alpha_dof_handler.locally_owned_dofs ();
+  matrix.reinit (alpha_owned,
+                 alpha_owned,
+                 distributed_scalar_sparsity (alpha_dof_handler, alpha_constraints),
+                 communicator);
 }
 
 /**
