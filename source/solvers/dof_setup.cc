@@ -57,20 +57,21 @@ void TwoFluidSolver<dim>::setup_dofs ()
   alpha_constraints.reinit (alpha_relevant);
   make_mesh_constraints (alpha_dof_handler, alpha_constraints);
   alpha_constraints.close ();
-  alpha.reinit (alpha_dof_handler.locally_owned_dofs (), alpha_relevant, communicator);
-  alpha_old.reinit (alpha);
-  alpha_old2.reinit (alpha);
+  fields.alpha.reinit (
+      alpha_dof_handler.locally_owned_dofs (), alpha_relevant, communicator);
+  fields.alpha_old.reinit (fields.alpha);
+  fields.alpha_old2.reinit (fields.alpha);
   // the granular temperature lives on the alpha_s space (Q1, same DoFs)
-  theta.reinit (alpha);
-  theta_old.reinit (alpha);
-  theta_old2.reinit (alpha);
+  fields.theta.reinit (fields.alpha);
+  fields.theta_old.reinit (fields.alpha);
+  fields.theta_old2.reinit (fields.alpha);
   make_flow_constraints (0.0);
 
-  flow_solution.reinit (flow_owned, flow_relevant, communicator);
-  flow_old.reinit (flow_solution);
-  flow_old2.reinit (flow_solution);
+  fields.flow.reinit (flow_owned, flow_relevant, communicator);
+  fields.flow_old.reinit (fields.flow);
+  fields.flow_old2.reinit (fields.flow);
   if (time_averages) // a mesh change or a resume transfers them afterwards
-    time_averages->reinit (flow_solution, alpha);
+    time_averages->reinit (fields.flow, fields.alpha);
   // the operator's sparsity, the reaction rows, a fresh preconditioner
   flow_system.reinit (mapping,
                       flow_dof_handler,
@@ -79,10 +80,10 @@ void TwoFluidSolver<dim>::setup_dofs ()
                       flow_constraints,
                       schur_constraints,
                       boundaries,
-                      alpha);
+                      fields.alpha);
 
   // the transport operator and the correction matrices
-  solids_transport.reinit (mapping, alpha_dof_handler, alpha_constraints, alpha);
+  solids_transport.reinit (mapping, alpha_dof_handler, alpha_constraints, fields.alpha);
   if (kinetic_theory)
     granular_energy.reinit (alpha_dof_handler, alpha_constraints); // PDE: its sparsity
 

@@ -69,7 +69,7 @@ std::string TwoFluidSolver<dim>::describe_failed_state (const double       dt,
       cell->get_dof_indices (dofs);
       for (const unsigned int v : cell->vertex_indices ())
       {
-        const double a = alpha (dofs[v]), t = theta (dofs[v]);
+        const double a = fields.alpha (dofs[v]), t = fields.theta (dofs[v]);
         if (a > alpha_hi[0] || std::isnan (a))
           theta_at_alpha_hi = t;
         record (alpha_lo, a, cell->vertex (v), -1);
@@ -88,9 +88,9 @@ std::string TwoFluidSolver<dim>::describe_failed_state (const double       dt,
     if (cell->is_locally_owned ())
     {
       values.reinit (cell);
-      values[gas].get_function_values (flow_solution, u);
+      values[gas].get_function_values (fields.flow, u);
       record (ug, u[0].norm (), values.quadrature_point (0), 1);
-      values[solids].get_function_values (flow_solution, u);
+      values[solids].get_function_values (fields.flow, u);
       record (us, u[0].norm (), values.quadrature_point (0), 1);
     }
   const auto worst_alpha = global_extreme (alpha_hi, 1, communicator);
@@ -100,7 +100,8 @@ std::string TwoFluidSolver<dim>::describe_failed_state (const double       dt,
 
   std::ostringstream report;
   report << "wetbed failure report\n"
-         << "time " << time << " s, step " << step_number << ", last attempted dt " << dt
+         << "time " << stepping.time << " s, step " << stepping.step_number
+         << ", last attempted dt " << dt
          << " s (time stepping/minimum time step = " << parameters.time.minimum_time_step
          << " s)\n"
          << "cause of the last rejection: " << rejection_reason << "\n"
@@ -126,7 +127,8 @@ std::string TwoFluidSolver<dim>::describe_failed_state (const double       dt,
            << stress.wet_viscosity << " Pa s\n";
   }
   report << solve_history.describe ();
-  report << "the last accepted state (t = " << time << " s, step " << step_number
+  report << "the last accepted state (t = " << stepping.time << " s, step "
+         << stepping.step_number
          << ") is in checkpoint/ (resume with --resume after changing the case) and in "
             "the last field output\n";
   return report.str ();

@@ -191,7 +191,7 @@ void TwoFluidSolver<dim>::constrain_inlet_gas (const double at_time)
             boundaries.is (cell->face (f)->boundary_id (), BoundaryType::inlet))
         {
           alpha_at_nodes.reinit (alpha_cell);
-          alpha_at_nodes.get_function_values (alpha, alpha_values);
+          alpha_at_nodes.get_function_values (fields.alpha, alpha_values);
           cell->get_dof_indices (dofs);
           for (unsigned int i = 0; i < dofs.size (); ++i)
           {

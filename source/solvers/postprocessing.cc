@@ -30,27 +30,27 @@ SolverState<dim> TwoFluidSolver<dim>::state () const
                           alpha_fe,
                           alpha_dof_handler,
                           solids_transport.lumped_mass (),
-                          flow_solution,
-                          flow_old2, // after the step the history has shifted
-                          alpha,
-                          alpha_old2,
-                          theta,
+                          fields.flow,
+                          fields.flow_old2, // after the step the history has shifted
+                          fields.alpha,
+                          fields.alpha_old2,
+                          fields.theta,
                           closure_evaluator,
                           kinetic_theory,
                           flow_system,
                           moving_wall_velocity (),
-                          time,
-                          previous_time_step,
-                          inlets.mean_superficial_velocity (time),
-                          inlets.peak_superficial_velocity (time),
-                          step_number,
-                          rejected_steps,
-                          last_krylov_iterations,
+                          stepping.time,
+                          stepping.previous_time_step,
+                          inlets.mean_superficial_velocity (stepping.time),
+                          inlets.peak_superficial_velocity (stepping.time),
+                          stepping.step_number,
+                          stepping.rejected_steps,
+                          stepping.last_krylov_iterations,
                           initial_solids_mass,
                           solids_transport.correction_momentum (),
                           granular_energy.budget (),
                           wave_speeds,
-                          time_error,
+                          stepping.time_error,
                           time_averages.get ()};
 }
 
@@ -73,7 +73,7 @@ void TwoFluidSolver<dim>::record_monitors ()
   if (Utilities::MPI::broadcast (communicator, monitors.writing_failed (), 0))
     throw std::runtime_error (
         "output/folder: cannot append to '" + parameters.output.folder +
-        "/monitors.csv' at t = " + std::to_string (time) +
+        "/monitors.csv' at t = " + std::to_string (stepping.time) +
         " (disk full or not writable); the last checkpoint is kept");
 }
 
@@ -98,11 +98,12 @@ template <int dim>
 void TwoFluidSolver<dim>::analyse_bubbles ()
 {
   if (!parameters.bubble_analysis.enabled ||
-      step_number % parameters.bubble_analysis.interval != 0)
+      stepping.step_number % parameters.bubble_analysis.interval != 0)
     return;
   TimerOutput::Scope scope (timer, "bubble analysis");
-  alpha.update_ghost_values ();
-  bubble_analysis->analyse (step_number, time, mapping, alpha_dof_handler, alpha);
+  fields.alpha.update_ghost_values ();
+  bubble_analysis->analyse (
+      stepping.step_number, stepping.time, mapping, alpha_dof_handler, fields.alpha);
 }
 
 template <int dim>
@@ -111,12 +112,12 @@ void TwoFluidSolver<dim>::record_ect ()
   if (!ect_sensor)
     return;
   TimerOutput::Scope scope (timer, "ECT sensor");
-  alpha.update_ghost_values ();
+  fields.alpha.update_ghost_values ();
   ect_sensor->record (state ());
   if (Utilities::MPI::broadcast (communicator, ect_sensor->writing_failed (), 0))
     throw std::runtime_error (
         "output/folder: cannot append to '" + parameters.output.folder +
-        "/ect.csv' at t = " + std::to_string (time) +
+        "/ect.csv' at t = " + std::to_string (stepping.time) +
         " (disk full or not writable); the last checkpoint is kept");
 }
 
@@ -127,7 +128,12 @@ void TwoFluidSolver<dim>::accumulate_averages ()
     return;
   TimerOutput::Scope scope (timer, "time averages");
   BlockVector        owned (flow_owned, communicator);
-  time_averages->add (time, previous_time_step, flow_solution, alpha, theta, owned);
+  time_averages->add (stepping.time,
+                      stepping.previous_time_step,
+                      fields.flow,
+                      fields.alpha,
+                      fields.theta,
+                      owned);
 }
 
 template <int dim>
@@ -141,7 +147,7 @@ void TwoFluidSolver<dim>::write_fields ()
   if (Utilities::MPI::broadcast (communicator, profiles->writing_failed (), 0))
     throw std::runtime_error (
         "output/folder: could not write the profiles in '" + parameters.output.folder +
-        "/statistics' at t = " + std::to_string (time) + " (disk full?)");
+        "/statistics' at t = " + std::to_string (stepping.time) + " (disk full?)");
 }
 
 template <int dim>
@@ -161,7 +167,7 @@ template <int dim>
 void TwoFluidSolver<dim>::write_spectra () const
 {
   const auto &sp = parameters.spectrum;
-  if (!sp.enabled || time <= sp.start_time ||
+  if (!sp.enabled || stepping.time <= sp.start_time ||
       Utilities::MPI::this_mpi_process (communicator) != 0)
     return;
   const std::string folder = parameters.output.folder;

@@ -24,14 +24,8 @@ typename TwoFluidSolver<dim>::Errors TwoFluidSolver<dim>::compute_errors () cons
   {
     ComponentSelectFunction<dim> mask (std::make_pair (first, first + count),
                                        2 * dim + 1);
-    VectorTools::integrate_difference (mapping,
-                                       flow_dof_handler,
-                                       flow_solution,
-                                       exact,
-                                       cellwise,
-                                       quadrature,
-                                       type,
-                                       &mask);
+    VectorTools::integrate_difference (
+        mapping, flow_dof_handler, fields.flow, exact, cellwise, quadrature, type, &mask);
     return VectorTools::compute_global_error (triangulation, cellwise, type);
   };
   Errors errors{norm (0, dim, VectorTools::L2_norm),
@@ -43,8 +37,13 @@ typename TwoFluidSolver<dim>::Errors TwoFluidSolver<dim>::compute_errors () cons
   {
     for (const auto type : {VectorTools::L2_norm, VectorTools::H1_seminorm})
     {
-      VectorTools::integrate_difference (
-          mapping, alpha_dof_handler, theta, *exact_theta, cellwise, quadrature, type);
+      VectorTools::integrate_difference (mapping,
+                                         alpha_dof_handler,
+                                         fields.theta,
+                                         *exact_theta,
+                                         cellwise,
+                                         quadrature,
+                                         type);
       (type == VectorTools::L2_norm ? errors.granular_temperature_l2
                                     : errors.granular_temperature_h1) =
           VectorTools::compute_global_error (triangulation, cellwise, type);

@@ -97,10 +97,9 @@ TwoFluidSolver<dim>::TwoFluidSolver (const Parameters &parameters, MPI_Comm comm
               parameters.physical.gas_density,
               upward_direction<dim> (parameters.physical.gravity),
               parameters.time.end_time),
-      time (0), time_step (parameters.time.initial_time_step), previous_time_step (0),
-      step_number (0), rejected_steps (0), last_krylov_iterations (0),
       initial_solids_mass (0), min_node_spacing (0)
 {
+  stepping.time_step = parameters.time.initial_time_step;
   held_velocity_function.initialize (
       "x,y,z,t", parameters.boundary.held_solids_velocity, expression_constants (), true);
   if (parameters.bed_monitors.pressure_probe_height >= 0)
@@ -218,15 +217,15 @@ void TwoFluidSolver<dim>::resume_from_checkpoint ()
       .receive (transferred_fields (), flow_owned, alpha_constraints, true);
   bubble_analysis->deserialize ();
 
-  time                = saved.time;
-  time_step           = saved.time_step;
-  previous_time_step  = saved.previous_time_step;
-  step_number         = saved.step_number;
-  rejected_steps      = saved.rejected_steps;
-  initial_solids_mass = saved.initial_solids_mass;
-  run_id              = saved.run_id;
+  stepping.time               = saved.time;
+  stepping.time_step          = saved.time_step;
+  stepping.previous_time_step = saved.previous_time_step;
+  stepping.step_number        = saved.step_number;
+  stepping.rejected_steps     = saved.rejected_steps;
+  initial_solids_mass         = saved.initial_solids_mass;
+  run_id                      = saved.run_id;
   field_output.restore ({saved.next_output_time, saved.output_index, saved.xdmf_entries});
-  make_flow_constraints (time);
+  make_flow_constraints (stepping.time);
 
   const std::string output = parameters.output.folder;
   monitors.reopen (output + "/monitors.csv",
@@ -253,7 +252,8 @@ void TwoFluidSolver<dim>::resume_from_checkpoint ()
   }
   resumed = true;
   pcout << "Resumed run " << run_id << " from " << checkpointing.source ()
-        << " at t = " << time << " (step " << step_number << ")" << std::endl;
+        << " at t = " << stepping.time << " (step " << stepping.step_number << ")"
+        << std::endl;
 }
 
 template <int dim>
@@ -262,7 +262,7 @@ void TwoFluidSolver<dim>::write_checkpoint ()
   checkpointing.write (state (),
                        transferred_fields (),
                        *bubble_analysis,
-                       {time_step,
+                       {stepping.time_step,
                         monitors.bytes_written (),
                         run_id,
                         field_output.counters (),
@@ -272,17 +272,21 @@ void TwoFluidSolver<dim>::write_checkpoint ()
 template <int dim>
 TransferredFields<dim> TwoFluidSolver<dim>::transferred_fields ()
 {
-  TransferredFields<dim> fields{
-      {&flow_solution, &flow_old, &flow_old2},
-      {&alpha, &alpha_old, &alpha_old2, &theta, &theta_old, &theta_old2}};
+  TransferredFields<dim> moved{{&fields.flow, &fields.flow_old, &fields.flow_old2},
+                               {&fields.alpha,
+                                &fields.alpha_old,
+                                &fields.alpha_old2,
+                                &fields.theta,
+                                &fields.theta_old,
+                                &fields.theta_old2}};
   if (time_averages)
   {
     for (auto *v : time_averages->flow_fields ())
-      fields.flow.push_back (v);
+      moved.flow.push_back (v);
     for (auto *v : time_averages->scalar_fields ())
-      fields.scalars.push_back (v);
+      moved.scalars.push_back (v);
   }
-  return fields;
+  return moved;
 }
 
 template <int dim>
@@ -292,7 +296,7 @@ void TwoFluidSolver<dim>::adapt_mesh ()
   // solids mass the coarsening lost given back (doc/theory.md, "Adaptive meshes")
   TimerOutput::Scope scope (timer, "adaptive refinement");
   // alpha_s at three levels and its time average keep their solids mass
-  std::vector<AlphaVector *> levels{&alpha, &alpha_old, &alpha_old2};
+  std::vector<AlphaVector *> levels{&fields.alpha, &fields.alpha_old, &fields.alpha_old2};
   if (time_averages)
     levels.push_back (time_averages->scalar_fields ()[0]);
   mesh_adaptation.prepare (
@@ -332,7 +336,7 @@ void TwoFluidSolver<dim>::set_initial_state ()
 {
   const auto          &ic = parameters.initial;
   const Tensor<1, dim> up = upward_direction<dim> (parameters.physical.gravity);
-  verification->set_time (time);
+  verification->set_time (stepping.time);
 
   // solids fraction at the vertices (Q1 nodes)
   const Point<dim>                       origin;
@@ -390,22 +394,22 @@ void TwoFluidSolver<dim>::set_initial_state ()
             value = height <= ic.bed_height + 1e-12 ? ic.bed_solids_fraction
                                                     : ic.freeboard_solids_fraction;
         }
-        if (alpha.locally_owned_elements ().is_element (dofs[v]))
-          alpha (dofs[v]) = value;
+        if (fields.alpha.locally_owned_elements ().is_element (dofs[v]))
+          fields.alpha (dofs[v]) = value;
       }
     }
-  alpha.zero_out_ghost_values ();
-  alpha_constraints.distribute (alpha); // hanging nodes of an adapted mesh
-  alpha.update_ghost_values ();
-  alpha_old  = alpha;
-  alpha_old2 = alpha;
-  theta      = kinetic_theory ? parameters.kinetic_theory.initial_temperature : 0.0;
+  fields.alpha.zero_out_ghost_values ();
+  alpha_constraints.distribute (fields.alpha); // hanging nodes of an adapted mesh
+  fields.alpha.update_ghost_values ();
+  fields.alpha_old  = fields.alpha;
+  fields.alpha_old2 = fields.alpha;
+  fields.theta = kinetic_theory ? parameters.kinetic_theory.initial_temperature : 0.0;
   const Function<dim> *exact_theta = verification->exact_granular_temperature ();
   if (kinetic_theory && exact_theta)
-    VectorTools::interpolate (mapping, alpha_dof_handler, *exact_theta, theta);
-  theta.update_ghost_values ();
-  theta_old  = theta;
-  theta_old2 = theta;
+    VectorTools::interpolate (mapping, alpha_dof_handler, *exact_theta, fields.theta);
+  fields.theta.update_ghost_values ();
+  fields.theta_old  = fields.theta;
+  fields.theta_old2 = fields.theta;
   make_flow_constraints (0.0); // the inlet gas velocity depends on alpha_s
 
   TrilinosWrappers::MPI::BlockVector owned_flow (flow_owned, communicator);
@@ -414,11 +418,11 @@ void TwoFluidSolver<dim>::set_initial_state ()
   else if (ic.gas_at_inlet_velocity)
     gas_at_inlet_velocity (owned_flow);
   flow_constraints.distribute (owned_flow);
-  flow_solution = owned_flow;
-  flow_old      = owned_flow;
-  flow_old2     = owned_flow;
+  fields.flow      = owned_flow;
+  fields.flow_old  = owned_flow;
+  fields.flow_old2 = owned_flow;
 
-  initial_solids_mass = state ().solids_mass (alpha);
+  initial_solids_mass = state ().solids_mass (fields.alpha);
 }
 
 template <int dim>
@@ -497,9 +501,10 @@ TwoFluidSolver<dim>::hydrostatic_profile (const std::vector<double> &heights) co
 template <int dim>
 bool TwoFluidSolver<dim>::try_time_step (const double dt, const unsigned int bdf_order)
 {
-  const BDFCoefficients bdf = bdf_coefficients (bdf_order, dt, previous_time_step);
-  make_flow_constraints (time + dt);
-  last_krylov_iterations = 0;
+  const BDFCoefficients bdf =
+      bdf_coefficients (bdf_order, dt, stepping.previous_time_step);
+  make_flow_constraints (stepping.time + dt);
+  stepping.last_krylov_iterations = 0;
   // doc/theory.md "Outer iterations": with an outer tolerance, each iteration after the
   // first tests the flow system re-assembled at the latest iterate before solving it,
   // and each flow solve is inexact (a forcing term of that tolerance)
@@ -507,10 +512,10 @@ bool TwoFluidSolver<dim>::try_time_step (const double dt, const unsigned int bdf
   const bool  adaptive =
       ts.outer_tolerance > 0 && !verification->runs_all_outer_iterations ();
   AlphaVector alpha_iterate; // alpha_s before the last transport (from k = 1)
-  double      alpha_change  = std::numeric_limits<double>::max ();
-  double      step_residual = 0; // |b - A x^n| / |b| at the first iteration
-  last_outer_converged      = !adaptive;
-  last_outer_iterations     = 0;
+  double      alpha_change       = std::numeric_limits<double>::max ();
+  double      step_residual      = 0; // |b - A x^n| / |b| at the first iteration
+  stepping.last_outer_converged  = !adaptive;
+  stepping.last_outer_iterations = 0;
   for (unsigned int k = 0; k < ts.outer_iterations; ++k)
   {
     abandon_step_on_stop (communicator);
@@ -524,29 +529,30 @@ bool TwoFluidSolver<dim>::try_time_step (const double dt, const unsigned int bdf
     {
       TimerOutput::Scope scope (timer, "outer residual");
       const double       residual =
-          flow_system.relative_residual (flow_solution, flow_constraints);
+          flow_system.relative_residual (fields.flow, flow_constraints);
       if (k == 0)
         step_residual = residual; // how far x^n is from solving the new step
       if (outer_converged (ts, k, residual, step_residual, alpha_change, floor))
       {
-        last_outer_converged = true;
+        stepping.last_outer_converged = true;
         break;
       }
       target = std::max (floor,
                          ts.outer_forcing *
                              std::min (residual, ts.outer_tolerance * step_residual));
-      if (k == 0 && ts.extrapolate_guess && step_number > 0 && previous_time_step > 0)
-        extrapolate_flow (dt / previous_time_step);
+      if (k == 0 && ts.extrapolate_guess && stepping.step_number > 0 &&
+          stepping.previous_time_step > 0)
+        extrapolate_flow (dt / stepping.previous_time_step);
     }
-    ++last_outer_iterations;
+    ++stepping.last_outer_iterations;
     const unsigned int iterations =
-        flow_system.solve (flow_solution, flow_constraints, target, dt, solve_history);
+        flow_system.solve (fields.flow, flow_constraints, target, dt, solve_history);
     if (iterations == numbers::invalid_unsigned_int)
     {
       rejection_reason = "FGMRES did not converge";
       return false;
     }
-    last_krylov_iterations += iterations;
+    stepping.last_krylov_iterations += iterations;
     if (verification->held_solids_fraction ())
     {
       // verification: alpha_s stays the exact field; Theta is solved for where it is
@@ -559,12 +565,12 @@ bool TwoFluidSolver<dim>::try_time_step (const double dt, const unsigned int bdf
       continue;
     }
     if (adaptive && k > 0 && k + 1 < ts.outer_iterations)
-      alpha_iterate = alpha;
+      alpha_iterate = fields.alpha;
     // 2.-3. alpha_s transport and compaction correction (held solids: alpha_s stays)
     if (!parameters.boundary.hold_solids && !advance_solids (bdf, dt))
       return false;
     if (adaptive && k > 0 && k + 1 < ts.outer_iterations)
-      alpha_change = largest_change (alpha, alpha_iterate, communicator);
+      alpha_change = largest_change (fields.alpha, alpha_iterate, communicator);
     // 4. granular temperature with the new alpha_s and u_s (PDE or local equilibrium);
     //    it also evolves in a held solids velocity field
     if (kinetic_theory && !update_granular_temperature (bdf, dt))
@@ -588,16 +594,16 @@ bool TwoFluidSolver<dim>::update_granular_temperature (const BDFCoefficients &bd
                                          boundaries,
                                          wall_conditions,
                                          moving_wall_velocity (),
-                                         alpha,
-                                         flow_solution,
-                                         theta_old,
-                                         theta_old2,
+                                         fields.alpha,
+                                         fields.flow,
+                                         fields.theta_old,
+                                         fields.theta_old2,
                                          closure_evaluator,
                                          *kinetic_theory,
                                          *verification,
                                          bdf,
                                          dt};
-  return granular_energy.update (inputs, theta, solve_history, rejection_reason);
+  return granular_energy.update (inputs, fields.theta, solve_history, rejection_reason);
 }
 
 template <int dim>
@@ -611,13 +617,13 @@ bool TwoFluidSolver<dim>::advance_solids (const BDFCoefficients &bdf, const doub
                                     alpha_fe,
                                     alpha_dof_handler,
                                     alpha_constraints,
-                                    flow_old,
-                                    alpha_old,
+                                    fields.flow_old,
+                                    fields.alpha_old,
                                     closure_evaluator,
                                     bdf,
                                     dt},
-                                   alpha,
-                                   flow_solution,
+                                   fields.alpha,
+                                   fields.flow,
                                    solve_history,
                                    rejection_reason);
 }
@@ -626,15 +632,15 @@ template <int dim>
 bool TwoFluidSolver<dim>::admissible ()
 {
   double lo = std::numeric_limits<double>::max (), hi = -lo;
-  for (unsigned int i = 0; i < alpha.locally_owned_size (); ++i)
+  for (unsigned int i = 0; i < fields.alpha.locally_owned_size (); ++i)
   {
-    lo = std::min (lo, alpha.local_element (i));
-    hi = std::max (hi, alpha.local_element (i));
+    lo = std::min (lo, fields.alpha.local_element (i));
+    hi = std::max (hi, fields.alpha.local_element (i));
   }
   lo = Utilities::MPI::min (lo, communicator);
   hi = Utilities::MPI::max (hi, communicator);
   BlockVector owned_solution (flow_owned, communicator);
-  owned_solution         = flow_solution; // norms need the non-ghosted layout
+  owned_solution         = fields.flow; // norms need the non-ghosted layout
   const double flow_norm = owned_solution.l2_norm ();
   if (!std::isfinite (flow_norm) || !std::isfinite (hi))
   {
@@ -657,10 +663,10 @@ void TwoFluidSolver<dim>::extrapolate_flow (const double ratio)
   // x^n + ratio (x^n - x^{n-1}): the linear extrapolation to t_{n+1}; constrained
   // entries are reset by the solve
   BlockVector guess (flow_owned, communicator), older (flow_owned, communicator);
-  guess = flow_old;
-  older = flow_old2;
+  guess = fields.flow_old;
+  older = fields.flow_old2;
   guess.sadd (1.0 + ratio, -ratio, older);
-  flow_solution = guess;
+  fields.flow = guess;
 }
 
 /**
@@ -683,13 +689,13 @@ void TwoFluidSolver<dim>::assemble_flow_system (const BDFCoefficients &bdf,
                                                          verification));
   const FlowAssemblyState<dim> state{bdf,
                                      dt,
-                                     &flow_solution,
-                                     &flow_old,
-                                     &flow_old2,
-                                     &alpha,
-                                     &alpha_old,
-                                     &alpha_old2,
-                                     &theta};
+                                     &fields.flow,
+                                     &fields.flow_old,
+                                     &fields.flow_old2,
+                                     &fields.alpha,
+                                     &fields.alpha_old,
+                                     &fields.alpha_old2,
+                                     &fields.theta};
   flow_system.assemble (state, flow_constraints, schur_constraints);
 }
 
@@ -704,23 +710,24 @@ double TwoFluidSolver<dim>::next_time_step (const double dt) const
 {
   if (!parameters.time.adaptive)
     return dt;
-  return time_step_controller.next (dt, wave_speeds, min_node_spacing, time_error);
+  return time_step_controller.next (
+      dt, wave_speeds, min_node_spacing, stepping.time_error);
 }
 
 template <int dim>
 void TwoFluidSolver<dim>::advance ()
 {
   const auto &ts = parameters.time;
-  double      dt = std::min (time_step, ts.end_time - time);
+  double      dt = std::min (stepping.time_step, ts.end_time - stepping.time);
   // save the state to retry from
-  const BlockVector saved_flow (flow_solution);
-  unsigned int      order         = (step_number == 0) ? 1 : ts.bdf_order;
+  const BlockVector saved_flow (fields.flow);
+  unsigned int      order         = (stepping.step_number == 0) ? 1 : ts.bdf_order;
   unsigned int      failed_checks = 0; // rejections by a divergence check in a row
   const auto        restore       = [&] ()
   {
-    flow_solution = saved_flow;
-    alpha         = alpha_old;
-    theta         = theta_old;
+    fields.flow  = saved_flow;
+    fields.alpha = fields.alpha_old;
+    fields.theta = fields.theta_old;
   };
   solve_history.clear ();
   typename DivergenceChecks<dim>::Result checked;
@@ -762,10 +769,10 @@ void TwoFluidSolver<dim>::advance ()
     if (accepted)
       break;
     solve_history.reject (rejection_reason);
-    ++rejected_steps;
+    ++stepping.rejected_steps;
     dt *= 0.5;
     order = 1;
-    pcout << "  step rejected at t = " << time << " (" << rejection_reason
+    pcout << "  step rejected at t = " << stepping.time << " (" << rejection_reason
           << "); retrying with dt = " << dt << std::endl;
     if (dt < ts.minimum_time_step)
       stop_diverged ("time step fell below time stepping/minimum time step",
@@ -789,45 +796,46 @@ void TwoFluidSolver<dim>::accept_step (const double dt, const double kinetic_ene
 {
   const auto &ts = parameters.time;
   divergence_checks.accept (kinetic_energy);
-  outer_iterations_run += last_outer_iterations;
-  if (!last_outer_converged)
-    ++unconverged_steps;
-  time_error = step_number > 0 ? alpha_time_error (alpha,
-                                                   alpha_old,
-                                                   alpha_old2,
-                                                   solids_transport.lumped_mass (),
-                                                   dt,
-                                                   previous_time_step,
-                                                   communicator)
-                               : 0.0;
+  stepping.outer_iterations_run += stepping.last_outer_iterations;
+  if (!stepping.last_outer_converged)
+    ++stepping.unconverged_steps;
+  stepping.time_error = stepping.step_number > 0
+                            ? alpha_time_error (fields.alpha,
+                                                fields.alpha_old,
+                                                fields.alpha_old2,
+                                                solids_transport.lumped_mass (),
+                                                dt,
+                                                stepping.previous_time_step,
+                                                communicator)
+                            : 0.0;
   // shift history
-  flow_old2  = flow_old;
-  flow_old   = flow_solution;
-  alpha_old2 = alpha_old;
-  alpha_old  = alpha;
-  theta_old2 = theta_old;
-  theta_old  = theta;
-  time += dt;
-  previous_time_step = dt;
-  ++step_number;
+  fields.flow_old2  = fields.flow_old;
+  fields.flow_old   = fields.flow;
+  fields.alpha_old2 = fields.alpha_old;
+  fields.alpha_old  = fields.alpha;
+  fields.theta_old2 = fields.theta_old;
+  fields.theta_old  = fields.theta;
+  stepping.time += dt;
+  stepping.previous_time_step = dt;
+  ++stepping.step_number;
   update_wave_speeds ();
-  const bool last_step = time >= parameters.time.end_time * (1 - 1e-12);
-  if (step_number % parameters.output.monitor_interval == 0 || last_step)
+  const bool last_step = stepping.time >= parameters.time.end_time * (1 - 1e-12);
+  if (stepping.step_number % parameters.output.monitor_interval == 0 || last_step)
     record_monitors ();
-  time_step = next_time_step (dt);
-  if (!last_step && time_step < ts.minimum_time_step)
+  stepping.time_step = next_time_step (dt);
+  if (!last_step && stepping.time_step < ts.minimum_time_step)
   {
     // the speeds (or the time error) grew until the next step is below the smallest
     // allowed: the accepted state is the last good one
     std::ostringstream reason;
-    reason << "the next time step " << time_step
+    reason << "the next time step " << stepping.time_step
            << " s fell below time stepping/minimum time step (Courant limit "
            << time_step_controller.courant_limit (wave_speeds, min_node_spacing)
            << " s; peak speeds: gas " << wave_speeds.gas << " m/s, solids "
            << wave_speeds.solids << " m/s, granular sound " << wave_speeds.granular_sound
-           << " m/s; alpha_s time error " << time_error << ")";
+           << " m/s; alpha_s time error " << stepping.time_error << ")";
     rejection_reason = reason.str ();
-    stop_diverged (reason.str (), "", time_step, [] () {});
+    stop_diverged (reason.str (), "", stepping.time_step, [] () {});
   }
 }
 
@@ -847,10 +855,10 @@ void TwoFluidSolver<dim>::stop_diverged (const std::string            &why,
   restore ();
   write_fields ();
   write_checkpoint ();
-  throw std::runtime_error (why + " at t = " + std::to_string (time) + " (" +
-                            rejection_reason + "); diagnosis in " + file +
-                            ", the last good state (t = " + std::to_string (time) +
-                            ") in checkpoint/ and the last field output");
+  throw std::runtime_error (
+      why + " at t = " + std::to_string (stepping.time) + " (" + rejection_reason +
+      "); diagnosis in " + file + ", the last good state (t = " +
+      std::to_string (stepping.time) + ") in checkpoint/ and the last field output");
 }
 
 template <int dim>
@@ -866,7 +874,7 @@ typename TwoFluidSolver<dim>::RunEnd TwoFluidSolver<dim>::run ()
   if (!initialized)
     initialize ();
   const auto &ts = parameters.time;
-  RunClock    clock{std::chrono::steady_clock::now (), time, step_number};
+  RunClock clock{std::chrono::steady_clock::now (), stepping.time, stepping.step_number};
   if (!resumed)
   {
     record_monitors ();
@@ -874,7 +882,7 @@ typename TwoFluidSolver<dim>::RunEnd TwoFluidSolver<dim>::run ()
     if (parameters.output.field_interval >= 0)
       write_fields ();
   }
-  while (time < ts.end_time * (1 - 1e-12))
+  while (stepping.time < ts.end_time * (1 - 1e-12))
   {
     try
     {
@@ -884,9 +892,9 @@ typename TwoFluidSolver<dim>::RunEnd TwoFluidSolver<dim>::run ()
     {
       const auto stopping = std::chrono::steady_clock::now ();
       write_checkpoint ();
-      pcout << "Stop requested by a signal during step " << step_number + 1
-            << ": the step was abandoned, the checkpoint holds t = " << time << " (step "
-            << step_number << "), written in "
+      pcout << "Stop requested by a signal during step " << stepping.step_number + 1
+            << ": the step was abandoned, the checkpoint holds t = " << stepping.time
+            << " (step " << stepping.step_number << "), written in "
             << std::chrono::duration<double> (std::chrono::steady_clock::now () -
                                               stopping)
                    .count ()
@@ -896,8 +904,8 @@ typename TwoFluidSolver<dim>::RunEnd TwoFluidSolver<dim>::run ()
     postprocess_step ();
     if (checkpoint_or_stop (clock))
       return RunEnd::stopped_by_signal;
-    if (step_number % parameters.output.progress_interval == 0 ||
-        time >= ts.end_time * (1 - 1e-12))
+    if (stepping.step_number % parameters.output.progress_interval == 0 ||
+        stepping.time >= ts.end_time * (1 - 1e-12))
       report_progress (clock);
   }
   finish_run (clock);
@@ -908,11 +916,12 @@ template <int dim>
 void TwoFluidSolver<dim>::postprocess_step ()
 {
   if (parameters.adaptive_refinement.enabled &&
-      step_number % parameters.adaptive_refinement.interval == 0)
+      stepping.step_number % parameters.adaptive_refinement.interval == 0)
   {
     adapt_mesh ();
     update_wave_speeds ();
-    time_step = next_time_step (previous_time_step); // the CFL of the new mesh
+    stepping.time_step =
+        next_time_step (stepping.previous_time_step); // the CFL of the new mesh
   }
   StallWatchdog::report_progress ();
   analyse_bubbles ();
@@ -921,7 +930,7 @@ void TwoFluidSolver<dim>::postprocess_step ()
   // the fields before the checkpoint of the same step: its counters then include this
   // output, which a resumed run would otherwise skip (and write the next one under its
   // number)
-  if (field_output.due (time))
+  if (field_output.due (stepping.time))
     write_fields ();
 }
 
@@ -939,13 +948,13 @@ bool TwoFluidSolver<dim>::checkpoint_or_stop (RunClock &clock)
       wall >= clock.next_wall_checkpoint * checkpoint.wall_time_interval;
   if (on_clock)
     clock.next_wall_checkpoint = std::floor (wall / checkpoint.wall_time_interval) + 1;
-  if ((checkpoint.interval > 0 && step_number % checkpoint.interval == 0) || on_clock ||
-      request != SignalRequest::none)
+  if ((checkpoint.interval > 0 && stepping.step_number % checkpoint.interval == 0) ||
+      on_clock || request != SignalRequest::none)
     write_checkpoint ();
   if (request == SignalRequest::stop)
   {
-    pcout << "Stop requested by a signal at t = " << time << " (step " << step_number
-          << ")" << std::endl;
+    pcout << "Stop requested by a signal at t = " << stepping.time << " (step "
+          << stepping.step_number << ")" << std::endl;
     return true;
   }
   return false;
@@ -955,14 +964,14 @@ template <int dim>
 void TwoFluidSolver<dim>::report_progress (const RunClock &clock) const
 {
   const double elapsed = clock.elapsed ();
-  const double eta =
-      elapsed / (time - clock.start_time) * (parameters.time.end_time - time);
+  const double eta     = elapsed / (stepping.time - clock.start_time) *
+                     (parameters.time.end_time - stepping.time);
   const auto &row = monitors.last ();
-  pcout << "step " << std::setw (6) << step_number << "  t = " << std::setw (9)
-        << std::setprecision (5) << time << " s  dt = " << std::setw (9) << row.time_step
-        << "  outer " << last_outer_iterations << "  Krylov " << std::setw (3)
-        << row.krylov << "  FI " << std::setw (7) << row.fluidization << "  alpha_s ["
-        << row.alpha_min << ", " << row.alpha_max << "]  mass drift "
+  pcout << "step " << std::setw (6) << stepping.step_number << "  t = " << std::setw (9)
+        << std::setprecision (5) << stepping.time << " s  dt = " << std::setw (9)
+        << row.time_step << "  outer " << stepping.last_outer_iterations << "  Krylov "
+        << std::setw (3) << row.krylov << "  FI " << std::setw (7) << row.fluidization
+        << "  alpha_s [" << row.alpha_min << ", " << row.alpha_max << "]  mass drift "
         << std::setprecision (2) << row.mass_drift << "  wall " << std::setprecision (4)
         << elapsed << " s  ETA " << eta << " s" << std::endl;
 }
@@ -976,7 +985,7 @@ void TwoFluidSolver<dim>::finish_run (const RunClock &clock)
   if (profiles) // at the end too (an output at this time is not repeated)
     profiles->write (state ());
   if (checkpoint.at_end &&
-      !(checkpoint.interval > 0 && step_number % checkpoint.interval == 0))
+      !(checkpoint.interval > 0 && stepping.step_number % checkpoint.interval == 0))
     write_checkpoint ();
   report_cost (clock);
   timer.print_wall_time_statistics (communicator);
@@ -990,21 +999,22 @@ void TwoFluidSolver<dim>::report_cost (const RunClock &clock) const
   const double       elapsed    = clock.elapsed ();
   const double       start_time = clock.start_time;
   const unsigned int first_step = clock.first_step;
-  pcout << "Finished: " << step_number << " steps (" << rejected_steps
+  pcout << "Finished: " << stepping.step_number << " steps (" << stepping.rejected_steps
         << " rejected), wall " << elapsed << " s, "
-        << elapsed / std::max (time - start_time, 1e-300) << " s per simulated second, "
-        << 1e6 * elapsed / std::max (1u, step_number - first_step) /
+        << elapsed / std::max (stepping.time - start_time, 1e-300)
+        << " s per simulated second, "
+        << 1e6 * elapsed / std::max (1u, stepping.step_number - first_step) /
                triangulation.n_global_active_cells ()
         << " us per cell per step (" << triangulation.n_global_active_cells ()
         << " cells at the end); velocity AMG builds " << flow_system.velocity_builds ()
         << std::endl;
   pcout << "Outer iterations: "
-        << static_cast<double> (outer_iterations_run) /
-               std::max (1u, step_number - first_step)
+        << static_cast<double> (stepping.outer_iterations_run) /
+               std::max (1u, stepping.step_number - first_step)
         << " per step";
   if (ts.outer_tolerance > 0 && !verification->runs_all_outer_iterations ())
-    pcout << " (" << unconverged_steps << " steps used all " << ts.outer_iterations
-          << ", their last iterate not tested)";
+    pcout << " (" << stepping.unconverged_steps << " steps used all "
+          << ts.outer_iterations << ", their last iterate not tested)";
   pcout << std::endl;
   {
     dealii::Utilities::System::MemoryStats memory;
@@ -1012,7 +1022,7 @@ void TwoFluidSolver<dim>::report_cost (const RunClock &clock) const
     const auto peak =
         dealii::Utilities::MPI::min_max_avg (memory.VmHWM / 1024.0, communicator);
     pcout << "Cost: "
-          << 1e6 * elapsed / std::max (1u, step_number - first_step) /
+          << 1e6 * elapsed / std::max (1u, stepping.step_number - first_step) /
                  flow_dof_handler.n_dofs ()
           << " us per flow DoF per step (" << flow_dof_handler.n_dofs ()
           << " flow DoFs, operator " << flow_system.krylov_operator ().name ()

@@ -22,6 +22,7 @@
 #include <wetbed/postprocess/time_averages.h>
 #include <wetbed/solvers/checkpointing.h>
 #include <wetbed/solvers/divergence_checks.h>
+#include <wetbed/solvers/field_levels.h>
 #include <wetbed/solvers/field_transfer.h>
 #include <wetbed/solvers/flow_system.h>
 #include <wetbed/solvers/granular_energy_solver.h>
@@ -29,6 +30,7 @@
 #include <wetbed/solvers/solids_transport.h>
 #include <wetbed/solvers/solve_history.h>
 #include <wetbed/solvers/solver_state.h>
+#include <wetbed/solvers/time_state.h>
 #include <wetbed/solvers/time_step_controller.h>
 
 #include <deal.II/base/conditional_ostream.h>
@@ -108,7 +110,7 @@ public:
   sample (const std::vector<dealii::Point<dim>> &points) const;
 
   const MonitorRow &last_monitors () const { return monitors.last (); }
-  double            current_time () const { return time; }
+  double            current_time () const { return stepping.time; }
   unsigned int      n_cells () const { return triangulation.n_global_active_cells (); }
 
 private:
@@ -280,12 +282,7 @@ private:
   FlowSystem<dim> flow_system;
   // the granular temperature update (PDE or algebraic), its matrix and budget
   GranularEnergySolver<dim> granular_energy;
-  // flow solutions (ghosted): current iterate, t_n, t_{n-1}
-  BlockVector flow_solution, flow_old, flow_old2;
-
-  AlphaVector alpha, alpha_old, alpha_old2;
-  // granular temperature Theta (m^2/s^2) on the alpha_s space; zero without KTGF
-  AlphaVector theta, theta_old, theta_old2;
+  FieldLevels               fields;
 
   std::unique_ptr<closures::DragModel>         drag;
   std::unique_ptr<closures::SolidsStressModel> solids_stress;
@@ -318,21 +315,14 @@ private:
   FieldOutput<dim> field_output;
   // the gas inflow of each inlet group
   InletConditions<dim> inlets;
-  double               time, time_step, previous_time_step;
-  unsigned int         step_number, rejected_steps, last_krylov_iterations;
-  // outer iterations of the last attempt, and over the accepted steps of this run: their
-  // sum and the steps that used all `outer iterations` (outer tolerance > 0; the test
-  // of the last iterate would need another assembly)
-  unsigned int last_outer_iterations = 0, outer_iterations_run = 0, unconverged_steps = 0;
-  bool         last_outer_converged = true;
-  WaveSpeeds   wave_speeds;    // of the current fields (update_wave_speeds)
-  double       time_error = 0; // alpha_s's local error estimate of the last step
-  double       initial_solids_mass;
-  double       min_node_spacing;
-  bool         initialized = false;
-  bool         resumed     = false; // the state came from a checkpoint
-  std::string  run_id;              // new for each run, kept by its resumes
-  std::string  rejection_reason;    // why the last attempted step was rejected
-  SolveHistory solve_history;       // the linear solves of the current step
+  TimeState            stepping;
+  WaveSpeeds           wave_speeds; // of the current fields (update_wave_speeds)
+  double               initial_solids_mass;
+  double               min_node_spacing;
+  bool                 initialized = false;
+  bool                 resumed     = false; // the state came from a checkpoint
+  std::string          run_id;              // new for each run, kept by its resumes
+  std::string          rejection_reason;    // why the last attempted step was rejected
+  SolveHistory         solve_history;       // the linear solves of the current step
 };
 } // namespace wetbed
