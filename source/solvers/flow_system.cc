@@ -55,6 +55,8 @@ void FlowSystem<dim>::reinit (const Mapping<dim>              &mapping,
                  up},
                 communicator);
   rhs.reinit (owned, communicator);
+  residual_iterate.reinit (owned, communicator);
+  residual.reinit (owned, communicator);
   assembled_flow.reinit (owned, relevant, communicator);
   assembled_alpha.reinit (alpha_layout);
   linear_solver.reset ();
@@ -102,10 +104,9 @@ template <int dim>
 double FlowSystem<dim>::relative_residual (
     const BlockVector &solution, const AffineConstraints<double> &flow_constraints) const
 {
-  BlockVector x (owned, communicator);
-  x = solution;
+  BlockVector &x = residual_iterate;
+  x              = solution;
   flow_constraints.set_zero (x); // the solve's unknowns: the constraints are lifted
-  BlockVector residual (owned, communicator);
   krylov_operator ().vmult (residual, x);
   residual.sadd (-1.0, 1.0, rhs);
   return residual.l2_norm () / std::max (rhs.l2_norm (), 1e-300);

@@ -282,7 +282,8 @@ private:
   FlowSystem<dim> flow_system;
   // the granular temperature update (PDE or algebraic), its matrix and budget
   GranularEnergySolver<dim> granular_energy;
-  FieldLevels               fields;
+  // the unknowns at the current iterate, t_n and t_{n-1}
+  FieldLevels fields;
 
   std::unique_ptr<closures::DragModel>         drag;
   std::unique_ptr<closures::SolidsStressModel> solids_stress;
@@ -315,14 +316,15 @@ private:
   FieldOutput<dim> field_output;
   // the gas inflow of each inlet group
   InletConditions<dim> inlets;
-  TimeState            stepping;
-  WaveSpeeds           wave_speeds; // of the current fields (update_wave_speeds)
-  double               initial_solids_mass;
-  double               min_node_spacing;
-  bool                 initialized = false;
-  bool                 resumed     = false; // the state came from a checkpoint
-  std::string          run_id;              // new for each run, kept by its resumes
-  std::string          rejection_reason;    // why the last attempted step was rejected
-  SolveHistory         solve_history;       // the linear solves of the current step
+  // the time, the steps and their counters (a checkpoint keeps part of it)
+  TimeState    stepping;
+  WaveSpeeds   wave_speeds; // of the current fields (update_wave_speeds)
+  double       initial_solids_mass;
+  double       min_node_spacing;
+  bool         initialized = false;
+  bool         resumed     = false; // the state came from a checkpoint
+  std::string  run_id;              // new for each run, kept by its resumes
+  std::string  rejection_reason;    // why the last attempted step was rejected
+  SolveHistory solve_history;       // the linear solves of the current step
 };
 } // namespace wetbed
