@@ -111,8 +111,8 @@ private:
   std::unique_ptr<FlowSolvePath<dim>> path;
   BlockVector                         rhs;
   // work vectors of relative_residual (owned layout), kept across calls
-  mutable BlockVector                 residual_iterate, residual;
-  FlowLinearSolver                    linear_solver;
+  mutable BlockVector residual_iterate, residual;
+  FlowLinearSolver    linear_solver;
   // the last assembly's arguments (for the coarse matrix that a rebuild after a
   // failed reused solve needs)
   struct
