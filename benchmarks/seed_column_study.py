@@ -1,0 +1,256 @@
+#!/usr/bin/env python3
+"""Seed 000's study on its small column (issue 54 item 4): prm/seed000_small_column.prm
+(5 cm x 1 m, 350 um glass, U = 0.8 m/s), dry and at the liquid loadings
+delta = 0.027, 0.055, 0.08, 0.10, 0.12, 0.138 (x 1e-2), each on 2 ranks to --end-time
+(3 s), with the statistics over the last --window (2) s of each run:
+
+  - the fluidization index from the pressure probe 1 cm above the inlet (and, beside it,
+    the one from the inlet pressure);
+  - the dominant frequency of the ECT slab signal at 7.6 cm (the peak of the amplitude
+    spectrum of alpha_s_slab, 100 frames/s, over the window);
+  - the bubble count and mean equivalent diameter, splittings and coalescences per s;
+  - the bed expansion (the mean bed-surface height over the 5 cm static bed);
+  - a regime label: no bubble in the window (mean count < 0.2) is "de-fluidized" when
+    the probe FI exceeds 1.3 (the bed is lifted whole: a plug) or "channelling" when it
+    is below 0.7 (the gas passes without carrying the bed's weight), else "homogeneous";
+    with bubbles, "slugging" when their mean equivalent diameter is at least 0.6 of the
+    column's diameter (3 cm), else "bubbling".
+
+Each row is compared with what the seed reports (dry FI ~ 1; FI below dry at 0.027 and
+0.055; FI above 1 beyond 0.1; the frequency more than doubled at 0.055; splitting bubbles
+below 0.08, slugging from 0.08 to 0.12, de-fluidized above).
+
+--levels L runs the case with L levels of adaptive refinement (the shipped case has 1);
+the default 0 is the case's base mesh without refinement: the study's seven runs at one
+level would cost about ten times as much on 2 cores (the AMR column of
+doc/benchmarks.md "Stress benchmark: 3D columns"), and item 6 of the issue (AMR against
+uniform on two of these runs) measures what the refinement changes.
+
+Runs are resumable (checkpoints every 10 min of wall time): call again to continue; a
+run stopped with SIGUSR2 is continued. Each run's monitors.csv (gzipped), bubble summary
+and events, and ECT slab signal are kept in benchmarks/results/seed_column_study/NAME/
+with its summary.json; --table rewrites the table of doc/seed_column_study.md and the
+picture doc/images/seed_column_fi.png from what is stored, without running.
+
+usage: python3 benchmarks/seed_column_study.py [--end-time 3] [--window 2] [--levels 0]
+           [--only dry 0.055 ...] [--table]
+(build first: bash scripts/build.sh; 2 cores: stop other runs first)
+"""
+import argparse
+import gzip
+import json
+import math
+import os
+import shutil
+import sys
+
+from benchmark_setup import (dominant_frequency, read_case, replace_doc_section, repository_root,
+                             run_resumable)
+
+root = repository_root()
+sys.path.insert(0, os.path.join(root, "scripts"))
+import plot_run  # noqa: E402
+import wetbed_results  # noqa: E402
+
+LOADINGS = ("dry", "0.027", "0.055", "0.08", "0.10", "0.12", "0.138")  # x 1e-2
+STATIC_BED = 0.05      # m, the case's static bed height
+DIAMETER = 0.05        # m, the column's diameter
+NO_BUBBLES = 0.2       # mean bubble count below which a window has no bubbles
+SLUG_DIAMETER = 0.6    # mean bubble diameter / column diameter from which it slugs
+
+
+def run_name(loading, levels):
+    return ("uniform" if levels == 0 else f"amr{levels}") + "_" + ("dry" if loading == "dry" else "wet_" + loading)
+
+
+def case_text(loading, levels, end_time, window, folder):
+    delta = 0.0 if loading == "dry" else float(loading) * 1e-2
+    amr = (f"subsection adaptive refinement\n set enabled = true\n set maximum level = {levels}\nend\n"
+           if levels > 0 else "subsection adaptive refinement\n set enabled = false\nend\n")
+    return (read_case("seed000_small_column") + "\n" + amr +
+            f"subsection wet particles\n set liquid loading = {delta:.6g}\nend\n"
+            f"subsection time stepping\n set end time = {end_time}\nend\n"
+            f"subsection statistics\n set time averages = true\n set start time = {end_time - window}\n"
+            " set radial profile heights = 0.025, 0.076\nend\n"
+            "subsection checkpoint\n set wall time interval = 600\nend\n"
+            f"subsection output\n set folder = {folder}\n set field interval = 0.05\n"
+            " set progress interval = 100\nend\n")
+
+
+def regime(s):
+    if not s["bubble_count"] >= NO_BUBBLES:
+        if s["fi_probe"] > 1.3:
+            return "de-fluidized (lifted plug)"
+        if s["fi_probe"] < 0.7:
+            return "channelling"
+        return "homogeneous"
+    return "slugging" if s["bubble_diameter"] >= SLUG_DIAMETER * DIAMETER else "bubbling"
+
+
+def summarize(folder, end_time, window, wall, code):
+    """The study's figures of one run folder over its last WINDOW s (up to where it got)."""
+    m = wetbed_results.monitors(folder)
+    t = m["time"]
+    reached = t[-1]
+    start = max(reached - window, 0.0)
+    stats = plot_run.statistics(folder, start)
+    signal = wetbed_results.ect(folder, start, reached)
+    slab = signal["signal"] if signal is not None and signal["signal"] else None
+    s = {"reached": reached, "end": end_time, "start": start, "wall": wall, "exit": code,
+         "steps": int(m["step"][-1]), "rejected": int(m["rejected_steps"][-1]),
+         "fi_probe": plot_run.time_average(t, m["probe_fluidization_index"], start),
+         "fi_inlet": plot_run.time_average(t, m["fluidization_index"], start),
+         "frequency": dominant_frequency(slab["time"], slab["alpha_s_slab"], start) if slab else math.nan,
+         "slab_mean": sum(slab["alpha_s_slab"]) / len(slab["alpha_s_slab"]) if slab else math.nan,
+         "bubble_count": stats.get("bubble_count", math.nan),
+         "bubble_diameter": stats.get("mean_bubble_diameter", math.nan),
+         "splittings": stats.get("splittings_per_second", math.nan),
+         "coalescences": stats.get("coalescences_per_second", math.nan),
+         "expansion": plot_run.time_average(t, m["bed_surface_height"], start) / STATIC_BED,
+         "surface_end": m["bed_surface_height"][-1],
+         "solids_speed_max": max(m["solids_speed_max"]), "gas_speed_max": max(m["gas_speed_max"]),
+         "cells": [min(m["active_cells"]), max(m["active_cells"])]}
+    s["regime"] = regime(s)
+    return s
+
+
+def store(folder, name, summary):
+    """Keeps the run's monitors (gzipped), bubble summary and events, slab signal and figures."""
+    kept = os.path.join(root, "benchmarks", "results", "seed_column_study", name)
+    os.makedirs(kept, exist_ok=True)
+    with open(os.path.join(folder, "monitors.csv"), "rb") as f, gzip.open(os.path.join(kept, "monitors.csv.gz"), "wb") as g:
+        shutil.copyfileobj(f, g)
+    for file in ("bubble_summary.csv", "bubble_events.csv", "ect.csv"):
+        if os.path.exists(os.path.join(folder, file)):
+            shutil.copy(os.path.join(folder, file), kept)
+    json.dump(summary, open(os.path.join(kept, "summary.json"), "w"), indent=1)
+
+
+def seed_statements(loading, s, dry):
+    """What the seed reports for this loading, each with whether this run agrees."""
+    out = []
+    verdict = lambda ok: "agrees" if ok else "differs"  # noqa: E731
+    if loading == "dry":
+        out.append(f"FI ≈ 1: {verdict(0.85 <= s['fi_inlet'] <= 1.15)}")
+        out.append(f"splitting bubbles: {verdict(s['regime'] == 'bubbling' and s['splittings'] > 0)}")
+        return "; ".join(out)
+    delta = float(loading)
+    if dry is not None and delta <= 0.055:
+        out.append(f"FI below dry: {verdict(s['fi_probe'] < dry['fi_probe'])}")
+    if delta > 0.1:
+        out.append(f"FI > 1: {verdict(s['fi_probe'] > 1)}")
+    if dry is not None and loading == "0.055":
+        out.append(f"frequency > 2× dry: {verdict(s['frequency'] > 2 * dry['frequency'])}")
+    if delta < 0.08:
+        out.append(f"splitting bubbles: {verdict(s['regime'] == 'bubbling' and s['splittings'] > 0)}")
+    elif delta <= 0.12:
+        out.append(f"slugging: {verdict(s['regime'] == 'slugging')}")
+    else:
+        out.append(f"de-fluidized: {verdict(s['regime'].startswith('de-fluidized'))}")
+    return "; ".join(out)
+
+
+def table(levels, end_time):
+    results = os.path.join(root, "benchmarks", "results", "seed_column_study")
+    stored = {}
+    for loading in LOADINGS:
+        path = os.path.join(results, run_name(loading, levels), "summary.json")
+        if os.path.exists(path):
+            stored[loading] = json.load(open(path))
+    dry = stored.get("dry")
+    if dry is not None and dry["reached"] < dry["end"] - 1e-9:
+        dry = None  # compare only with a finished dry run
+    mesh = "the base mesh (2,640 cells), no refinement" if levels == 0 else f"{levels} level(s) of AMR"
+    lines = [f"Command: `python3 benchmarks/seed_column_study.py --end-time {end_time:g} --levels {levels}` "
+             f"(2 ranks a run, {mesh}; resumable: run it again to continue; `--table` rewrites this from "
+             "benchmarks/results/seed_column_study/). Statistics over each run's last 2 s; a run that has not "
+             "reached its end time shows its last 2 s so far.", "",
+             "| δ (10⁻²) | simulated | FI probe (inlet) | f at 7.6 cm (Hz) | bubbles | mean d_b (cm) | "
+             "splits, coalescences per s | expansion | regime | seed 000 | wall s (s per simulated s) |",
+             "|---|---|---|---|---|---|---|---|---|---|---|"]
+    for loading in LOADINGS:
+        s = stored.get(loading)
+        if s is None:
+            lines.append(f"| {loading} | not run yet | | | | | | | | | |")
+            continue
+        lines.append(
+            f"| {loading} | {s['reached']:.2f} / {s['end']:g} s | {s['fi_probe']:.2f} ({s['fi_inlet']:.2f}) | "
+            f"{s['frequency']:.2f} | {s['bubble_count']:.2f} | {100 * s['bubble_diameter']:.2f} | "
+            f"{s['splittings']:.2f}, {s['coalescences']:.2f} | {s['expansion']:.2f} | {s['regime']} | "
+            f"{seed_statements(loading, s, dry)} | {s['wall']:.0f} ({s['wall'] / max(s['reached'], 1e-9):.0f}) |")
+    figure_lines = picture(stored, levels)
+    return lines + figure_lines
+
+
+def picture(stored, levels):
+    """FI and the slab frequency against the loading, the seed's trend marked."""
+    points = [(0.0 if k == "dry" else float(k), s) for k, s in stored.items()]
+    if len(points) < 2:
+        return []
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    points.sort(key=lambda p: p[0])
+    x = [p[0] for p in points]
+    figure, (left, right) = plt.subplots(1, 2, figsize=(10, 4))
+    left.plot(x, [p[1]["fi_probe"] for p in points], "o-", label="wetbed, probe at 1 cm")
+    left.plot(x, [p[1]["fi_inlet"] for p in points], "s--", label="wetbed, inlet")
+    left.axhline(1, color="grey", lw=0.8)
+    left.axvspan(0.0, 0.055, color="tab:blue", alpha=0.08, label="seed: FI below dry")
+    left.axvspan(0.1, 0.14, color="tab:red", alpha=0.08, label="seed: FI > 1")
+    left.set_xlabel("liquid loading δ (10⁻²)")
+    left.set_ylabel("fluidization index")
+    left.legend(fontsize=8)
+    right.plot(x, [p[1]["frequency"] for p in points], "o-", label="wetbed, ECT slab at 7.6 cm")
+    if points[0][0] == 0.0:
+        right.plot([0.055], [2 * points[0][1]["frequency"]], "v", color="tab:red",
+                   label="seed: > 2× dry at 0.055")
+    right.set_xlabel("liquid loading δ (10⁻²)")
+    right.set_ylabel("dominant frequency (Hz)")
+    right.legend(fontsize=8)
+    figure.tight_layout()
+    name = "seed_column_fi.png" if levels == 0 else f"seed_column_fi_amr{levels}.png"
+    figure.savefig(os.path.join(root, "doc", "images", name), dpi=90)
+    return ["", f"![FI and frequency against the loading](images/{name})"]
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--end-time", type=float, default=3.0)
+    parser.add_argument("--window", type=float, default=2.0)
+    parser.add_argument("--levels", type=int, default=0)
+    parser.add_argument("--only", nargs="*", help="loadings to run, in this order (dry, 0.027, ...)")
+    parser.add_argument("--table", action="store_true", help="rewrite the table only")
+    args = parser.parse_args()
+    unknown = [o for o in (args.only or []) if o not in LOADINGS]
+    if unknown:
+        sys.exit(f"--only: unknown loading(s) {unknown}; choose from {LOADINGS}")
+    work = os.path.join(root, "build", "benchmarks", "seed_column_study")
+    os.makedirs(work, exist_ok=True)
+    env = dict(os.environ, OMPI_MCA_rmaps_base_oversubscribe="1")
+    for loading in ([] if args.table else args.only or LOADINGS):  # in the order given
+        name = run_name(loading, args.levels)
+        folder, prm = os.path.join(work, name), os.path.join(work, name + ".prm")
+        open(prm, "w").write(case_text(loading, args.levels, args.end_time, args.window, folder))
+        command = ["mpirun", "-np", "2", os.path.join(root, "build", "wetbed"), prm]
+        code, wall = run_resumable(command, folder, os.path.join(work, name + ".log"),
+                                   os.path.join(work, name + ".wall"), True, env, args.end_time)
+        if not os.path.exists(os.path.join(folder, "monitors.csv")):
+            print(f"{name}: exit {code}, no monitors.csv (see {name}.log)", flush=True)
+            continue
+        summary = summarize(folder, args.end_time, args.window, wall, code)
+        store(folder, name, summary)
+        print(f"{name}: exit {code}, t = {summary['reached']:.3f} s, wall {wall:.0f} s, {summary['regime']}",
+              flush=True)
+        if code not in (0, 4):
+            print(f"{name}: stopped with status {code}; see {name}.log and failure_report.txt", flush=True)
+    lines = table(args.levels, args.end_time)
+    key = "seed_column_study" if args.levels == 0 else f"seed_column_study_amr{args.levels}"
+    replace_doc_section(root, key, "The study: dry and six loadings" +
+                        ("" if args.levels == 0 else f" ({args.levels} level(s) of AMR)"), lines,
+                        doc_name="seed_column_study.md")
+    print("\n".join(lines))
+
+
+if __name__ == "__main__":
+    main()
