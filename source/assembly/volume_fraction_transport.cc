@@ -335,6 +335,7 @@ unsigned int VolumeFractionTransport<dim>::advance (Vector      &alpha_out,
   EdgeValues low_flux (n_owned), flux (n_owned);
   double     removed = 0, total = 0;
   bound_activity = 0;
+  inflow_volume  = 0;
   for (unsigned int sub = 0; sub < n_sub; ++sub)
   {
     alpha.update_ghost_values ();
@@ -347,6 +348,8 @@ unsigned int VolumeFractionTransport<dim>::advance (Vector      &alpha_out,
     // global bounds [0, alpha_max]: low-order compression into a packed node is
     // blocked here, the discrete counterpart of the packing limit
     bound_activity += limit_to_bounds (alpha, flux, alpha_max);
+    if (inflow_rates.size () > 0)
+      inflow_volume += add_inflow (alpha, tau, alpha_max);
   }
   alpha.update_ghost_values ();
   const MPI_Comm comm = alpha.get_mpi_communicator ();
@@ -354,6 +357,7 @@ unsigned int VolumeFractionTransport<dim>::advance (Vector      &alpha_out,
   total               = dealii::Utilities::MPI::sum (total, comm);
   limiter_activity    = total > 0 ? removed / total : 0.0;
   bound_activity      = dealii::Utilities::MPI::sum (bound_activity, comm);
+  inflow_volume       = dealii::Utilities::MPI::sum (inflow_volume, comm);
   store (alpha_out);
   return n_sub;
 }
@@ -408,6 +412,28 @@ double VolumeFractionTransport<dim>::limit_to_bounds (
     alpha.local_element (i) = updated[i];
   alpha.update_ghost_values ();
   return held_back;
+}
+
+template <int dim>
+double VolumeFractionTransport<dim>::add_inflow (Vector      &alpha,
+                                                 const double tau,
+                                                 const double alpha_max) const
+{
+  // the feed's boundary flux int phi_i alpha_in u_in.(-n) ds, the term the conservative
+  // operator leaves out (it has no boundary flux): a source at the inlet nodes
+  double added = 0;
+  for (unsigned int i = 0; i < rows.size (); ++i)
+  {
+    const double rate = inflow_rates.local_element (i);
+    if (rate <= 0 || constrained[i])
+      continue;
+    const double m          = mass.local_element (i);
+    const double a          = alpha.local_element (i);
+    const double after      = std::min (a + tau * rate / m, std::max (alpha_max, a));
+    alpha.local_element (i) = after;
+    added += m * (after - a);
+  }
+  return added;
 }
 
 template <int dim>

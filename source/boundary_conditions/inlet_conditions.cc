@@ -6,6 +6,7 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/vector.h>
 
 #include <cmath>
 #include <sstream>
@@ -118,7 +119,9 @@ InletConditions<dim>::make_group (const Boundary &b) const
         velocity  = entry.velocity;
         g.uniform = false;
       }
-      mass_flow = entry.mass_flow;
+      mass_flow         = entry.mass_flow;
+      g.solids_fraction = entry.solids_fraction;
+      g.solids_speed    = entry.solids_speed;
     }
   if (!mass_flow.empty ())
   {
@@ -223,6 +226,71 @@ std::map<std::string, double> InletConditions<dim>::areas () const
   for (const Group &g : groups)
     result[g.name] = g.area;
   return result;
+}
+
+template <int dim>
+Tensor<1, dim> InletConditions<dim>::solids_velocity (const types::boundary_id id) const
+{
+  const Group &g = group (id);
+  return g.solids_speed * g.direction;
+}
+
+template <int dim>
+bool InletConditions<dim>::feeds_solids (const types::boundary_id id) const
+{
+  return group (id).solids_fraction > 0;
+}
+
+template <int dim>
+double InletConditions<dim>::solids_volume_flow () const
+{
+  double flow = 0;
+  for (const Group &g : groups)
+    flow += g.solids_fraction * g.solids_speed * g.projected_area;
+  return flow;
+}
+
+template <int dim>
+void InletConditions<dim>::solids_inflow_rates (
+    const DoFHandler<dim>                            &alpha_dofs,
+    const Mapping<dim>                               &mapping,
+    const AffineConstraints<double>                  &constraints,
+    const LinearAlgebra::distributed::Vector<double> &layout,
+    LinearAlgebra::distributed::Vector<double>       &rates) const
+{
+  rates.reinit (0);
+  if (solids_volume_flow () == 0)
+    return;
+  rates.reinit (layout);
+  const QGauss<dim - 1>                quadrature (3);
+  FEFaceValues<dim>                    face (mapping,
+                          alpha_dofs.get_fe (),
+                          quadrature,
+                          update_values | update_JxW_values | update_normal_vectors);
+  Vector<double>                       local (alpha_dofs.get_fe ().n_dofs_per_cell ());
+  std::vector<types::global_dof_index> dofs (local.size ());
+  for (const auto &cell : alpha_dofs.active_cell_iterators ())
+    if (cell->is_locally_owned () && cell->at_boundary ())
+      for (const unsigned int f : cell->face_indices ())
+        if (cell->face (f)->at_boundary ())
+          for (const Group &g : groups)
+            if (g.id == cell->face (f)->boundary_id () && g.solids_fraction > 0)
+            {
+              face.reinit (cell, f);
+              local = 0;
+              for (unsigned int q = 0; q < quadrature.size (); ++q)
+              {
+                // alpha_in u_in.(-n): the feed's volume flux into the domain
+                const double flux =
+                    g.solids_fraction * g.solids_speed *
+                    std::max (-(g.direction * face.normal_vector (q)), 0.0);
+                for (unsigned int i = 0; i < local.size (); ++i)
+                  local[i] += face.shape_value (i, q) * flux * face.JxW (q);
+              }
+              cell->get_dof_indices (dofs);
+              constraints.distribute_local_to_global (local, dofs, rates);
+            }
+  rates.compress (VectorOperation::add);
 }
 
 template class InletConditions<2>;

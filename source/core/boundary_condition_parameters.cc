@@ -69,6 +69,18 @@ void BoundaryConditionParameters::declare_parameters (ParameterHandler &prm)
                      "The direction in which the gas enters through an inlet group: "
                      "';'-separated `group: x y [z]` entries (normalised; it must point "
                      "into the domain). A group not named enters against gravity.");
+  prm.declare_entry (
+      "inlet solids",
+      "",
+      Anything (),
+      "Inlet groups that feed solids: ';'-separated `group: alpha_s speed` entries, "
+      "the solids fraction of the feed (0 < alpha_s < maximum packing) and its speed "
+      "(m/s, > 0) along the group's direction (`inlet directions`, else against "
+      "gravity), e.g. 'feed: 0.3 0.5'. The solids velocity is held at that speed on "
+      "the group's faces and alpha_s u_s enters the solids continuity there; the fed "
+      "mass is added up (monitors: solids_fed_mass) and taken out of "
+      "solids_mass_drift. On the other inlets the solids velocity is zero. Empty: "
+      "none.");
   const std::string names = closures::registered_names (wall_condition_registry ());
   const std::string per_group =
       " on the walls: one condition (" + names +
@@ -157,11 +169,11 @@ void BoundaryConditionParameters::parse_parameters (ParameterHandler &prm)
     for (InletGroup &g : inlet_groups)
       if (g.name == name)
         return g;
-    inlet_groups.push_back ({name, "", "", {}});
+    inlet_groups.push_back ({name, "", "", {}, 0, 0});
     return inlet_groups.back ();
   };
   for (const char *list :
-       {"inlet velocities", "inlet mass flow rates", "inlet directions"})
+       {"inlet velocities", "inlet mass flow rates", "inlet directions", "inlet solids"})
   {
     const std::string        where = std::string ("boundary conditions/") + list;
     std::vector<std::string> named;
@@ -183,6 +195,21 @@ void BoundaryConditionParameters::parse_parameters (ParameterHandler &prm)
         g.velocity = value;
       else if (std::string (list) == "inlet mass flow rates")
         g.mass_flow = value;
+      else if (std::string (list) == "inlet solids")
+      {
+        std::istringstream  words (value);
+        std::vector<double> numbers;
+        for (std::string w; words >> w;)
+          numbers.push_back (parse_number (w, where));
+        require (numbers.size () == 2,
+                 where,
+                 "the group '" + name + "' needs `alpha_s speed`, two numbers");
+        g.solids_fraction = numbers[0];
+        g.solids_speed    = numbers[1];
+        require (g.solids_fraction > 0,
+                 where,
+                 "the solids fraction of '" + name + "' must be > 0");
+      }
       else
       {
         std::istringstream components (value);
@@ -232,8 +259,17 @@ void BoundaryConditionParameters::check_wall_conditions (
       (void)wall_condition_registry ().at (name) (settings[k]);
 }
 
+bool BoundaryConditionParameters::feeds_solids () const
+{
+  return std::any_of (inlet_groups.begin (),
+                      inlet_groups.end (),
+                      [] (const InletGroup &g) { return g.feeds_solids (); });
+}
+
 void BoundaryConditionParameters::check_inlet_groups (
-    const std::vector<std::string> &inlet_names, const unsigned int dim)
+    const std::vector<std::string> &inlet_names,
+    const unsigned int              dim,
+    const double                    maximum_packing)
 {
   QuietStandardError quiet;
   std::string        known;
@@ -244,6 +280,7 @@ void BoundaryConditionParameters::check_inlet_groups (
     const std::string where = "boundary conditions/" +
                               std::string (!g.mass_flow.empty () ? "inlet mass flow rates"
                                            : !g.velocity.empty () ? "inlet velocities"
+                                           : g.feeds_solids ()    ? "inlet solids"
                                                                   : "inlet directions");
     require (std::find (inlet_names.begin (), inlet_names.end (), g.name) !=
                  inlet_names.end (),
@@ -253,6 +290,16 @@ void BoundaryConditionParameters::check_inlet_groups (
     require (g.velocity.empty () || g.mass_flow.empty (),
              "boundary conditions/inlet mass flow rates",
              "the group '" + g.name + "' also has an entry in `inlet velocities`");
+    if (g.feeds_solids ())
+    {
+      require (g.solids_fraction < maximum_packing,
+               "boundary conditions/inlet solids",
+               "the solids fraction of '" + g.name +
+                   "' must be below physical properties/maximum packing");
+      require (std::isfinite (g.solids_speed) && g.solids_speed > 0,
+               "boundary conditions/inlet solids",
+               "the solids speed of '" + g.name + "' must be a positive number");
+    }
     const std::string variables = dim == 3 ? "x,y,z,t" : "x,y,t";
     for (const bool mass : {false, true})
     {

@@ -626,7 +626,7 @@ void Parameters::parse_parameters (ParameterHandler &prm)
   divergence_checks.parse_parameters (prm);
   bed_monitors.parse_parameters (prm, dimension);
   boundary.check_time_span (time.end_time);
-  boundary.check_inlet_groups (mesh.inlet_names, dimension);
+  boundary.check_inlet_groups (mesh.inlet_names, dimension, physical.maximum_packing);
   collect_domain_checks ();
 }
 

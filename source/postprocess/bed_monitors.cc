@@ -109,8 +109,14 @@ MonitorRow evaluate_monitors (const SolverState<dim> &s)
 
   const auto &pp  = s.parameters.physical;
   row.solids_mass = s.solids_mass (s.alpha);
-  row.mass_drift =
-      s.initial_solids_mass > 0 ? row.solids_mass / s.initial_solids_mass - 1 : 0;
+  // relative to the initial mass, the fed mass taken out (to the fed mass when the
+  // domain starts empty)
+  row.mass_drift = s.initial_solids_mass > 0
+                       ? (row.solids_mass - s.solids_fed_mass) / s.initial_solids_mass - 1
+                   : s.solids_fed_mass > 0 ? row.solids_mass / s.solids_fed_mass - 1
+                                           : 0;
+  if (s.parameters.boundary.feeds_solids ())
+    row.solids_fed = {s.solids_fed_mass};
   const PressureDrop drop = evaluate_pressure_drop (s, row.solids_mass);
   row.pressure_drop       = drop.pressure_drop;
   const GasFlows flows    = evaluate_gas_flows (s);

@@ -33,6 +33,8 @@ std::string header (const MonitorColumns &columns)
     file << ",probe_" << i << "_alpha_s,probe_" << i << "_pressure";
   if (columns.pressure_probe)
     file << ",probe_pressure_drop,probe_fluidization_index";
+  if (columns.solids_feed)
+    file << ",solids_fed_mass";
   file << ",run"; // the run's id, last: the columns before keep their places
   return file.str ();
 }
@@ -147,6 +149,8 @@ void Monitors::add (const MonitorRow &r)
     file << ',' << r.probe_alpha[i] << ',' << r.probe_pressure[i];
   for (const double value : r.pressure_probe)
     file << ',' << value;
+  for (const double value : r.solids_fed)
+    file << ',' << std::setprecision (15) << value;
   file << ',' << run << '\n';
   file.flush ();
 }

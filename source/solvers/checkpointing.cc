@@ -259,6 +259,7 @@ void Checkpointing<dim>::write (const SolverState<dim>       &s,
   state.next_output_time    = record.outputs.next_output_time;
   state.output_index        = record.outputs.output_index;
   state.initial_solids_mass = s.initial_solids_mass;
+  state.solids_fed_mass     = s.solids_fed_mass;
   state.monitors_bytes      = record.monitors_bytes;
   state.xdmf_entries        = record.outputs.xdmf_entries;
   state.bubble_state        = bubbles.saved_state ();
@@ -346,7 +347,8 @@ CheckpointState Checkpointing<dim>::read ()
     throw InputError ("checkpoint/resume",
                       "'" + folder + "/state' is not a readable wetbed checkpoint");
   }
-  require (state.format == CheckpointState::current_format,
+  require (state.format == CheckpointState::current_format ||
+               state.format == CheckpointState::previous_format,
            "checkpoint/resume",
            "'" + folder + "' was written by another checkpoint format version");
   require (state.dimension == dim,

@@ -84,6 +84,13 @@ void TwoFluidSolver<dim>::setup_dofs ()
 
   // the transport operator and the correction matrices
   solids_transport.reinit (mapping, alpha_dof_handler, alpha_constraints, fields.alpha);
+  if (parameters.boundary.feeds_solids ())
+  {
+    LinearAlgebra::distributed::Vector<double> rates;
+    inlets.solids_inflow_rates (
+        alpha_dof_handler, mapping, alpha_constraints, fields.alpha, rates);
+    solids_transport.set_inflow (rates);
+  }
   if (kinetic_theory)
     granular_energy.reinit (alpha_dof_handler, alpha_constraints); // PDE: its sparsity
 

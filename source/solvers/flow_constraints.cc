@@ -82,14 +82,31 @@ void TwoFluidSolver<dim>::make_flow_constraints (const double at_time)
     // walls first: their constraints take precedence at the corners
     constrain_walls ();
     constrain_inlet_gas (at_time);
-    // solids are held at the distributor and retained at the outlet (a grid)
-    for (const auto type : {BoundaryType::inlet, BoundaryType::outlet})
-      interpolate_on (mapping,
-                      flow_dof_handler,
-                      ids.ids (type),
-                      Functions::ZeroFunction<dim> (2 * dim + 1),
-                      flow_constraints,
-                      solids_mask);
+    // solids are held at the distributor (or enter at a feed's velocity) and retained
+    // at the outlet (a grid)
+    std::set<types::boundary_id> held = ids.ids (BoundaryType::outlet);
+    for (const auto id : ids.ids (BoundaryType::inlet))
+      if (!inlets.feeds_solids (id))
+        held.insert (id);
+      else
+      {
+        Vector<double>       feed (2 * dim + 1);
+        const Tensor<1, dim> u = inlets.solids_velocity (id);
+        for (unsigned int d = 0; d < dim; ++d)
+          feed[dim + d] = u[d];
+        interpolate_on (mapping,
+                        flow_dof_handler,
+                        {id},
+                        Functions::ConstantFunction<dim> (feed),
+                        flow_constraints,
+                        solids_mask);
+      }
+    interpolate_on (mapping,
+                    flow_dof_handler,
+                    held,
+                    Functions::ZeroFunction<dim> (2 * dim + 1),
+                    flow_constraints,
+                    solids_mask);
   }
   const types::global_dof_index pinned = pin_pressure (relevant);
   flow_constraints.close ();

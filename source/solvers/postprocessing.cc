@@ -47,6 +47,7 @@ SolverState<dim> TwoFluidSolver<dim>::state () const
                           stepping.rejected_steps,
                           stepping.last_krylov_iterations,
                           initial_solids_mass,
+                          solids_fed_mass,
                           solids_transport.correction_momentum (),
                           granular_energy.budget (),
                           wave_speeds,

@@ -223,6 +223,7 @@ void TwoFluidSolver<dim>::resume_from_checkpoint ()
   stepping.step_number        = saved.step_number;
   stepping.rejected_steps     = saved.rejected_steps;
   initial_solids_mass         = saved.initial_solids_mass;
+  solids_fed_mass             = saved.solids_fed_mass;
   run_id                      = saved.run_id;
   field_output.restore ({saved.next_output_time, saved.output_index, saved.xdmf_entries});
   make_flow_constraints (stepping.time);
@@ -328,7 +329,8 @@ MonitorColumns TwoFluidSolver<dim>::monitor_columns () const
   return {parameters.output.probe_heights,
           parameters.bed_monitors.pressure_drop_planes,
           static_cast<unsigned int> (parameters.bed_monitors.point_probes.size ()),
-          parameters.bed_monitors.pressure_probe_height >= 0};
+          parameters.bed_monitors.pressure_probe_height >= 0,
+          parameters.boundary.feeds_solids ()};
 }
 
 template <int dim>
@@ -797,6 +799,8 @@ void TwoFluidSolver<dim>::accept_step (const double dt, const double kinetic_ene
   const auto &ts = parameters.time;
   divergence_checks.accept (kinetic_energy);
   stepping.outer_iterations_run += stepping.last_outer_iterations;
+  solids_fed_mass +=
+      parameters.physical.particle_density * solids_transport.inflow_volume ();
   if (!stepping.last_outer_converged)
     ++stepping.unconverged_steps;
   stepping.time_error = stepping.step_number > 0

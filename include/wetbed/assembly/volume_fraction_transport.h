@@ -72,6 +72,14 @@ public:
   /** The most explicit sub-steps of one advance() (the shipped cases take 1 to 4). */
   static constexpr unsigned int max_sub_steps = 1000;
 
+  /**
+   * The solids a feed brings in (InletConditions::solids_inflow_rates: m^3/s per node,
+   * the alpha_s layout; size 0: none): every sub-step adds tau rates_i / m_i to the
+   * node after the limited fluxes, cut where it would exceed alpha_max, and the volume
+   * added is kept in inflow_volume.
+   */
+  void set_inflow (const Vector &rates) { inflow_rates = rates; }
+
   /** dt / (cfl * stable sub-step) of the last advance(), infinite when nothing
    * bounds it from below (no stable sub-step could be found). */
   double required_sub_steps () const { return last_required_sub_steps; }
@@ -92,6 +100,7 @@ public:
   /** Statistics of the last call. */
   double limiter_activity = 0; // fraction of antidiffusive flux removed
   double bound_activity   = 0; // solids volume held back by the packing limit
+  double inflow_volume    = 0; // solids volume the feed added (m^3; m^2 in 2D)
 
 private:
   double last_required_sub_steps = 0;
@@ -127,6 +136,9 @@ private:
                                    double           &removed,
                                    double           &total) const;
 
+  /** alpha_i += tau rates_i / m_i, cut at alpha_max; returns the volume added. */
+  double add_inflow (Vector &alpha, double tau, double alpha_max) const;
+
   /** alpha_i += sum_j l_ij G_ij / m_i with l_ij keeping [0, alpha_max]; returns held-back
    * volume. */
   double limit_to_bounds (Vector                                 &alpha,
@@ -146,6 +158,7 @@ private:
   dealii::TrilinosWrappers::SparseMatrix convection, convection_transpose;
   std::vector<Row> rows; // one per locally owned dof, in local order
   Vector           mass;
+  Vector           inflow_rates; // the feed's source per node; size 0: none
   /** Copies alpha_out's owned values into `work` (ghosted with every column). */
   void load (const Vector &alpha_out);
   /** Copies `work` back into alpha_out; hanging nodes follow their parents. */

@@ -10,14 +10,18 @@
 
 namespace wetbed
 {
-/** The gas inflow of one inlet group (`boundary conditions/inlet velocities`,
- * `inlet mass flow rates`, `inlet directions`). */
+/** The inflow of one inlet group (`boundary conditions/inlet velocities`, `inlet mass
+ * flow rates`, `inlet directions`, `inlet solids`). */
 struct InletGroup
 {
   std::string         name;
   std::string         velocity;  // superficial velocity (m/s), function of x, y, (z,) t
   std::string         mass_flow; // kg/s (kg/s per metre depth in 2D), function of t
-  std::vector<double> direction; // the gas enters along it; empty: against gravity
+  std::vector<double> direction; // the inflow's direction; empty: against gravity
+  // solids fed through the group: their volume fraction and speed along the direction
+  // (m/s); 0, 0: none (the solids velocity is held at zero there)
+  double solids_fraction = 0, solids_speed = 0;
+  bool   feeds_solids () const { return solids_fraction > 0; }
 };
 
 /** `subsection boundary conditions`. */
@@ -56,10 +60,15 @@ struct BoundaryConditionParameters
    * or for the gas). */
   void check_wall_conditions (bool has_kinetic_theory) const;
   /** The inlet groups name groups of `inlet_names`, each once with a velocity or a
-   * mass flow (not both), with expressions muparser reads in the variables of `dim`
-   * and directions of `dim` components that are not zero; InputError naming the
-   * parameter and the group if not. */
-  void check_inlet_groups (const std::vector<std::string> &inlet_names, unsigned int dim);
+   * mass flow (not both), with expressions muparser reads in the variables of `dim`,
+   * directions of `dim` components that are not zero, and a solids feed with a
+   * fraction in (0, maximum_packing) and a positive finite speed; InputError naming
+   * the parameter and the group if not. */
+  void check_inlet_groups (const std::vector<std::string> &inlet_names,
+                           unsigned int                    dim,
+                           double                          maximum_packing);
+  /** Whether any inlet group feeds solids. */
+  bool feeds_solids () const;
   /** The inlet velocity finite at 400 times over [0, end_time]; InputError if not. */
   void check_time_span (double end_time) const;
 };

@@ -42,8 +42,9 @@ struct MonitorRow
   // the gas mass flows in through the inlets and out through the outlets (kg/s, per
   // metre depth in 2D)
   double gas_inflow = 0, gas_outflow = 0;
-  double solids_mass      = 0; // kg (per metre depth in 2D)
-  double mass_drift       = 0; // relative change of the solids mass since t = 0
+  double solids_mass = 0; // kg (per metre depth in 2D)
+  double mass_drift  = 0; // relative change of the solids mass since t = 0, the
+                          // fed mass taken out
   double alpha_min        = 0;
   double alpha_max        = 0;
   double gas_speed_max    = 0;
@@ -65,6 +66,9 @@ struct MonitorRow
   // p' there minus the outlet's, and the FI from it (dP A over the buoyant bed weight);
   // empty without one
   std::vector<double> pressure_probe;
+  // the solids mass fed through the inlets since t = 0 (kg, per metre depth in 2D);
+  // empty when no inlet feeds solids
+  std::vector<double> solids_fed;
 };
 
 /** The optional columns of monitors.csv. */
@@ -74,6 +78,7 @@ struct MonitorColumns
   std::vector<double> pressure_drop_planes; // pressure_drop_<a>_<b> (two heights or none)
   unsigned int        point_probes = 0;     // probe_<i>_alpha_s, probe_<i>_pressure
   bool pressure_probe = false; // probe_pressure_drop, probe_fluidization_index
+  bool solids_feed    = false; // solids_fed_mass
 };
 
 /** Collects MonitorRows and writes them (rank 0) to a CSV file; its last column, run,

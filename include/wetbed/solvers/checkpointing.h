@@ -36,15 +36,17 @@ struct AppendedFile
  * the run that wrote it (the file `state` of a checkpoint). */
 struct CheckpointState
 {
-  static constexpr unsigned int  current_format = 4;
+  // format 5 added solids_fed_mass; a format-4 checkpoint (no solids feed then) reads
+  // with 0
+  static constexpr unsigned int  current_format = 5, previous_format = 4;
   unsigned int                   format = current_format, dimension = 0;
   std::string                    mesh_file;
   double                         time = 0, time_step = 0, previous_time_step = 0;
   unsigned int                   step_number = 0, rejected_steps = 0;
   double                         next_output_time    = 0;
   unsigned int                   output_index        = 0;
-  double                         initial_solids_mass = 0;
-  unsigned long long             monitors_bytes      = 0;
+  double                         initial_solids_mass = 0, solids_fed_mass = 0;
+  unsigned long long             monitors_bytes = 0;
   std::vector<dealii::XDMFEntry> xdmf_entries;
   std::string                    bubble_state; // the tracker and the bubble CSV lengths
   // (name, FNV-1a hash of the contents) of every file of the saved triangulation
@@ -62,6 +64,8 @@ struct CheckpointState
     archive &step_number &rejected_steps &next_output_time &output_index;
     archive &initial_solids_mass &monitors_bytes &xdmf_entries &bubble_state &files;
     archive &run_id &mesh_file_hash &coarse_mesh_hash &appended_files        &parameters;
+    if (format >= 5)
+      archive &solids_fed_mass;
   }
 };
 

@@ -63,6 +63,13 @@ public:
   /** The lumped mass of the alpha_s space (m^3 per node, m^2 in 2D). */
   const AlphaVector &lumped_mass () const { return transport.lumped_mass (); }
 
+  /** The solids feed's source (InletConditions::solids_inflow_rates; size 0: none),
+   * for this mesh. */
+  void set_inflow (const AlphaVector &rates) { transport.set_inflow (rates); }
+
+  /** The solids volume the feed added in the last advance() (m^3; m^2 in 2D). */
+  double inflow_volume () const { return transport.inflow_volume; }
+
   /** The vertical mixture momentum the velocity correction of the last advance added
    * (N s, per metre depth in 2D; 0 where nothing was compacted). */
   double correction_momentum () const { return correction.correction_momentum (); }

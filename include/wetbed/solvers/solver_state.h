@@ -68,6 +68,7 @@ struct SolverState
   double       inlet_peak_velocity; // the largest superficial speed on an inlet, m/s
   unsigned int step_number, rejected_steps, krylov_iterations;
   double       initial_solids_mass;
+  double       solids_fed_mass; // through the inlets since t = 0 (inlet solids)
   // the vertical mixture momentum the compaction correction added in the last outer
   // iteration (N s, per metre depth in 2D)
   double               correction_momentum;

@@ -320,6 +320,7 @@ private:
   TimeState    stepping;
   WaveSpeeds   wave_speeds; // of the current fields (update_wave_speeds)
   double       initial_solids_mass;
+  double       solids_fed_mass = 0; // through the inlets since t = 0 (inlet solids)
   double       min_node_spacing;
   bool         initialized = false;
   bool         resumed     = false; // the state came from a checkpoint
