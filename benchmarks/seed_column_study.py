@@ -31,9 +31,13 @@ run stopped with SIGUSR2 is continued. Each run's monitors.csv (gzipped), bubble
 and events, and ECT slab signal are kept in benchmarks/results/seed_column_study/NAME/
 with its summary.json; --table rewrites the table of doc/seed_column_study.md and the
 picture doc/images/seed_column_fi.png from what is stored, without running.
+--pictures also draws, from the runs' fields in build/, the vertical slices of alpha_s
+at four times of the window and the alpha_g = 0.8 iso-surface at the end
+(scripts/render_fields.py) of the dry run and of the loadings 0.055 and 0.138, and the
+ECT frames stacked in time, dry beside them (scripts/ect_stack.py), into doc/images/.
 
 usage: python3 benchmarks/seed_column_study.py [--end-time 3] [--window 2] [--levels 0]
-           [--only dry 0.055 ...] [--table]
+           [--only dry 0.055 ...] [--table] [--pictures]
 (build first: bash scripts/build.sh; 2 cores: stop other runs first)
 """
 import argparse
@@ -214,6 +218,48 @@ def picture(stored, levels):
     return ["", f"![FI and frequency against the loading](images/{name})"]
 
 
+PICTURED = ("dry", "0.055", "0.138")  # the seed's three regimes
+
+
+def pictures(levels, work, window):
+    """Slices, iso-surfaces and the ECT stack of the pictured runs that have fields."""
+    import subprocess
+    python = "/usr/bin/python3" if os.path.exists("/usr/bin/python3") else sys.executable
+    images = os.path.join(root, "doc", "images")
+    tag = "" if levels == 0 else f"_amr{levels}"
+    lines, stacked, labels = [], [], []
+    for loading in PICTURED:
+        name = run_name(loading, levels)
+        folder = os.path.join(work, name)
+        if not os.path.exists(os.path.join(folder, "monitors.csv")):
+            continue
+        m = wetbed_results.monitors(folder)
+        end = m["time"][-1]
+        start = max(end - window, 0.0)
+        top = max(0.3, 0.05 + max(h for t, h in zip(m["time"], m["bed_surface_height"]) if t >= start))
+        times = ",".join(f"{start + k * (end - start) / 3:.3f}" for k in range(4))
+        out = os.path.join(work, "pictures", name)
+        subprocess.run([python, os.path.join(root, "scripts", "render_fields.py"), folder, "--times", times,
+                        "--no-animation", "--height", f"0,{min(top, 1.0):.2f}", "--size", "300x700", "--out", out],
+                       check=True, stdout=subprocess.DEVNULL)
+        label = "dry" if loading == "dry" else f"δ = {loading}·10⁻²"
+        for source, kind in (("alpha_s_snapshots.png", "slices"), ("alpha_g_iso.png", "iso")):
+            if os.path.exists(os.path.join(out, source)):
+                target = f"seed_column_{name.replace('.', '_')}_{kind}.png"  # name: uniform_... or amrL_...
+                shutil.copy(os.path.join(out, source), os.path.join(images, target))
+                what = "α_s on the vertical slice through the axis" if kind == "slices" else "the α_g = 0.8 iso-surface"
+                lines.append(f"![{label}: {what}](images/{target})")
+        stacked.append(folder)
+        labels.append(label)
+    if len(stacked) > 1:
+        target = f"seed_column_ect{tag}.png"
+        subprocess.run([python, os.path.join(root, "scripts", "ect_stack.py"), *stacked, "--labels", ",".join(labels),
+                        "--start", f"{max(0.0, min(wetbed_results.monitors(f)['time'][-1] for f in stacked) - window):.3f}",
+                        "--out", os.path.join(images, target)], check=True, stdout=subprocess.DEVNULL)
+        lines.append(f"![ECT frames stacked in time, dry beside wet](images/{target})")
+    return lines
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--end-time", type=float, default=3.0)
@@ -221,6 +267,7 @@ def main():
     parser.add_argument("--levels", type=int, default=0)
     parser.add_argument("--only", nargs="*", help="loadings to run, in this order (dry, 0.027, ...)")
     parser.add_argument("--table", action="store_true", help="rewrite the table only")
+    parser.add_argument("--pictures", action="store_true", help="also draw slices, iso-surfaces and ECT stacks")
     args = parser.parse_args()
     unknown = [o for o in (args.only or []) if o not in LOADINGS]
     if unknown:
@@ -245,6 +292,8 @@ def main():
         if code not in (0, 4):
             print(f"{name}: stopped with status {code}; see {name}.log and failure_report.txt", flush=True)
     lines = table(args.levels, args.end_time)
+    if args.pictures:
+        lines += [""] + pictures(args.levels, work, args.window)
     key = "seed_column_study" if args.levels == 0 else f"seed_column_study_amr{args.levels}"
     replace_doc_section(root, key, "The study: dry and six loadings" +
                         ("" if args.levels == 0 else f" ({args.levels} level(s) of AMR)"), lines,

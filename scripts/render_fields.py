@@ -3,7 +3,7 @@
 
 usage: scripts/render_fields.py RUN_FOLDER [--field NAME] [--times T,T,...] [--count N]
                                 [--size WxH] [--out FOLDER] [--frames N] [--fps F]
-                                [--no-animation] [--iso A] [--no-iso]
+                                [--no-animation] [--iso A] [--no-iso] [--height LOW,HIGH]
 
 Reads the run's own field output: fields.xdmf with its fields_NNN.h5 files
 (`output/field format = hdf5` or `vtu and hdf5`) or, without them, the fields_NNN.pvtu
@@ -16,7 +16,10 @@ RUN_FOLDER/pictures):
   <field>.gif           the animation over the run (at most --frames outputs, evenly
                         picked; default 120; --fps frames per second, default 10)
   alpha_g_iso.png       3D only: the iso-surface alpha_g = --iso (default 0.8, the
-                        bubble threshold of `bubble analysis`) at the last output time
+                        bubble threshold of `bubble analysis`) at the last time of
+                        --times, else at the last output time
+--height LOW,HIGH draws only that vertical range (m; slices and the iso-surface), e.g.
+the bed of a tall column.
 2D: the field over the whole domain. 3D: the vertical slice through the axis of the
 domain (the plane of the first horizontal coordinate through the centre of the bounding
 box). Vertical is the direction of gravity in RUN_FOLDER/parameters.prm (else the last
@@ -185,12 +188,16 @@ def iso_figure(frame, view, field, level, size):
     fig = plt.figure(figsize=(size[0] / dpi, size[1] / dpi), dpi=dpi)
     ax = fig.add_subplot(projection="3d")
     triangles = iso_triangles(frame, field, level)
+    low, high = view.extent[2], view.extent[3]
+    heights = triangles[:, :, view.vertical]
+    triangles = triangles[(heights >= low - 1e-12).all(axis=1) & (heights <= high + 1e-12).all(axis=1)]
     if len(triangles):
         height = triangles[:, :, view.vertical].mean(axis=1)
         lo, hi = view.extent[2], view.extent[3]
         colours = plt.get_cmap("cividis")((height - lo) / max(hi - lo, 1e-30))
         ax.add_collection3d(Poly3DCollection(triangles, facecolors=colours, edgecolors="none", alpha=0.8))
     lo, hi = frame.points.min(axis=0), frame.points.max(axis=0)
+    lo[view.vertical], hi[view.vertical] = low, high
     ax.set_xlim(lo[0], hi[0])
     ax.set_ylim(lo[1], hi[1])
     ax.set_zlim(lo[2], hi[2])
@@ -221,6 +228,8 @@ def main():
     parser.add_argument("--no-animation", action="store_true")
     parser.add_argument("--iso", type=float, default=0.8)
     parser.add_argument("--no-iso", action="store_true")
+    parser.add_argument("--height", default=None,
+                        help="LOW,HIGH: the vertical range drawn (m), e.g. 0,0.3 for the bed of a tall column")
     args = parser.parse_args()
     ensure_modules("matplotlib", "numpy")
     import matplotlib
@@ -243,6 +252,14 @@ def main():
     if args.field not in first.fields:
         sys.exit(f"render_fields: no field '{args.field}' in the output of {folder}")
     view = View(first, gravity)
+    if args.height:
+        try:
+            low, high = (float(v) for v in args.height.split(","))
+        except ValueError:
+            sys.exit(f"render_fields: --height '{args.height}' is not LOW,HIGH in metres")
+        if not low < high:
+            sys.exit(f"render_fields: --height '{args.height}': LOW must be below HIGH")
+        view.extent = (view.extent[0], view.extent[1], low, high)
     vmax = (packing or 0.63) if args.field == "alpha_s" else max(float(first.fields[args.field].max()), 1e-30)
     if args.times:
         chosen = sorted({int(np.argmin(np.abs(times - float(t)))) for t in args.times.split(",")})
@@ -302,7 +319,8 @@ def main():
         plt.close(fig)
         written.append(path)
     if view.dim == 3 and not args.no_iso:
-        last = frames[-1][1](["alpha_g"])
+        # at the last chosen time (--times), else at the last output
+        last = frames[chosen[-1] if args.times else -1][1](["alpha_g"])
         if "alpha_g" in last.fields:
             fig = iso_figure(last, view, "alpha_g", args.iso, (max(size[0], 500), size[1]))
             path = os.path.join(out, "alpha_g_iso.png")
