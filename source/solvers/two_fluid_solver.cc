@@ -799,6 +799,7 @@ void TwoFluidSolver<dim>::accept_step (const double dt, const double kinetic_ene
   const auto &ts = parameters.time;
   divergence_checks.accept (kinetic_energy);
   stepping.outer_iterations_run += stepping.last_outer_iterations;
+  stepping.krylov_iterations_run += stepping.last_krylov_iterations;
   solids_fed_mass +=
       parameters.physical.particle_density * solids_transport.inflow_volume ();
   if (!stepping.last_outer_converged)
@@ -1019,7 +1020,13 @@ void TwoFluidSolver<dim>::report_cost (const RunClock &clock) const
   if (ts.outer_tolerance > 0 && !verification->runs_all_outer_iterations ())
     pcout << " (" << stepping.unconverged_steps << " steps used all "
           << ts.outer_iterations << ", their last iterate not tested)";
-  pcout << std::endl;
+  pcout << "; FGMRES iterations "
+        << static_cast<double> (stepping.krylov_iterations_run) /
+               std::max (1u, stepping.step_number - first_step)
+        << " per step, "
+        << static_cast<double> (stepping.krylov_iterations_run) /
+               std::max (1u, stepping.outer_iterations_run)
+        << " per flow solve" << std::endl;
   {
     dealii::Utilities::System::MemoryStats memory;
     dealii::Utilities::System::get_memory_stats (memory);

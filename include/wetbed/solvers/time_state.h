@@ -18,10 +18,11 @@ struct TimeState
   // converged
   unsigned int last_krylov_iterations = 0, last_outer_iterations = 0;
   bool         last_outer_converged = true;
-  // over the accepted steps of this run: the outer iterations and the steps that used
-  // all `outer iterations` (outer tolerance > 0; the test of the last iterate would
-  // need another assembly)
-  unsigned int outer_iterations_run = 0, unconverged_steps = 0;
-  double       time_error = 0; // alpha_s's local error estimate of the last step
+  // over the accepted steps of this run: the outer iterations, the FGMRES iterations
+  // and the steps that used all `outer iterations` (outer tolerance > 0; the test of
+  // the last iterate would need another assembly)
+  unsigned int       outer_iterations_run = 0, unconverged_steps = 0;
+  unsigned long long krylov_iterations_run = 0;
+  double             time_error = 0; // alpha_s's local error estimate of the last step
 };
 } // namespace wetbed
