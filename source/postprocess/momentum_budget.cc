@@ -5,6 +5,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/vector.h>
 
 #include <array>
 
@@ -142,7 +143,13 @@ InertialBudget evaluate_inertial_budget (const SolverState<dim> &s)
   std::vector<double>              a_new (n_q), a_old (n_q), a_lag (n_q);
   std::vector<Tensor<1, dim>> grad_a_lag (n_q), u_new (n_q), u_old (n_q), u_lag (n_q);
   std::vector<Tensor<2, dim>> grad_u_lag (n_q);
-  const MomentumForm          form = s.parameters.momentum_form;
+  // each flow vector's values on the cell, read once (a read from a Trilinos vector
+  // looks every DoF up by its global index)
+  Vector<double> now (s.flow_fe.n_dofs_per_cell ()), before (now.size ()),
+      lag (now.size ());
+  const auto view = [] (Vector<double> &v)
+  { return make_array_view (v.begin (), v.end ()); };
+  const MomentumForm form = s.parameters.momentum_form;
 
   const double residual = pp.residual_solids_fraction;
   auto         fraction = [&] (const unsigned int k, const double alpha_s)
@@ -161,14 +168,16 @@ InertialBudget evaluate_inertial_budget (const SolverState<dim> &s)
       alpha_values.get_function_values (s.flow_system.linearisation_alpha (), a_lag);
       alpha_values.get_function_gradients (s.flow_system.linearisation_alpha (),
                                            grad_a_lag);
+      cell->get_dof_values (s.flow_solution, now);
+      cell->get_dof_values (s.flow_previous, before);
+      cell->get_dof_values (s.flow_system.linearisation_flow (), lag);
       for (unsigned int k = 0; k < 2; ++k)
       {
-        flow_values[velocity[k]].get_function_values (s.flow_solution, u_new);
-        flow_values[velocity[k]].get_function_values (s.flow_previous, u_old);
-        flow_values[velocity[k]].get_function_values (s.flow_system.linearisation_flow (),
-                                                      u_lag);
-        flow_values[velocity[k]].get_function_gradients (
-            s.flow_system.linearisation_flow (), grad_u_lag);
+        const auto &values = flow_values[velocity[k]];
+        values.get_function_values_from_local_dof_values (view (now), u_new);
+        values.get_function_values_from_local_dof_values (view (before), u_old);
+        values.get_function_values_from_local_dof_values (view (lag), u_lag);
+        values.get_function_gradients_from_local_dof_values (view (lag), grad_u_lag);
         for (unsigned int q = 0; q < n_q; ++q)
         {
           const double JxW          = flow_values.JxW (q);

@@ -1,5 +1,6 @@
 #include <wetbed/closures/drag/terminal_velocity.h>
 #include <wetbed/postprocess/pressure_drop.h>
+#include <wetbed/solvers/component_table.h>
 #include <wetbed/solvers/divergence_checks.h>
 
 #include <deal.II/base/mpi.h>
@@ -83,7 +84,8 @@ DivergenceChecks<dim>::check_speeds (const SolverState<dim> &s, const double lim
   // alpha_s > 1e-3 (as the wave speeds), the cells above the limit worst first
   std::vector<types::global_dof_index> dofs (s.flow_fe.n_dofs_per_cell ()),
       alpha_dofs (s.alpha_fe.n_dofs_per_cell ());
-  const unsigned int  n_nodes = s.flow_fe.base_element (0).n_dofs_per_cell ();
+  const unsigned int  n_nodes   = s.flow_fe.base_element (0).n_dofs_per_cell ();
+  const auto          component = component_to_system_table (s.flow_fe);
   std::vector<Excess> local;
   Result              result;
   auto                alpha_cell = s.alpha_dof_handler.begin_active ();
@@ -102,10 +104,7 @@ DivergenceChecks<dim>::check_speeds (const SolverState<dim> &s, const double lim
         {
           double u2 = 0;
           for (unsigned int d = 0; d < dim; ++d)
-            u2 += std::pow (
-                s.flow_solution (
-                    dofs[s.flow_fe.component_to_system_index (k * dim + d, node)]),
-                2);
+            u2 += std::pow (s.flow_solution (dofs[component[k * dim + d][node]]), 2);
           speed[k] = std::max (speed[k], std::sqrt (u2));
         }
       }
@@ -157,6 +156,7 @@ DivergenceChecks<dim>::check (const SolverState<dim> &s) const
   std::vector<types::global_dof_index> dofs (s.flow_fe.n_dofs_per_cell ()),
       alpha_dofs (s.alpha_fe.n_dofs_per_cell ());
   std::vector<bool> seen (s.alpha.locally_owned_size (), false);
+  const auto        component  = component_to_system_table (s.flow_fe);
   double            energy     = 0;
   auto              alpha_cell = s.alpha_dof_handler.begin_active ();
   for (const auto &cell : s.flow_dof_handler.active_cell_iterators ())
@@ -180,10 +180,7 @@ DivergenceChecks<dim>::check (const SolverState<dim> &s) const
         {
           double u2 = 0;
           for (unsigned int d = 0; d < dim; ++d)
-            u2 +=
-                std::pow (s.flow_solution (
-                              dofs[s.flow_fe.component_to_system_index (k * dim + d, v)]),
-                          2);
+            u2 += std::pow (s.flow_solution (dofs[component[k * dim + d][v]]), 2);
           e2 += (k == 0 ? (1 - a) * pp.gas_density : a * pp.particle_density) * u2;
         }
         energy += 0.5 * s.lumped_mass.local_element (local) * e2;

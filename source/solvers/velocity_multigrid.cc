@@ -1,3 +1,4 @@
+#include <wetbed/solvers/component_table.h>
 #include <wetbed/solvers/velocity_multigrid.h>
 
 #include <deal.II/base/quadrature_lib.h>
@@ -29,6 +30,8 @@ void VelocityMultigrid<dim>::reinit (const MatrixFreeFlowOperator<dim> &op_)
 {
   op                          = &op_;
   block.op                    = op;
+  coarse_components           = component_to_system_table (coarse_fe);
+  fine_components             = component_to_system_table (op->velocity_element ());
   const DoFHandler<dim> &fine = op->velocity_dofs ();
   coarse_dofs.reinit (fine.get_triangulation ());
   coarse_dofs.distribute_dofs (coarse_fe);
@@ -71,7 +74,7 @@ void VelocityMultigrid<dim>::reinit (const MatrixFreeFlowOperator<dim> &op_)
         bool                              all_owned = true;
         for (unsigned int c = 0; c < 2 * dim; ++c)
         {
-          const auto global = indices[fe.component_to_system_index (c, a)];
+          const auto global = indices[fine_components[c][a]];
           all_owned         = all_owned && owned.is_element (global);
           node[c]           = all_owned ? partitioner.global_to_local (global) : 0;
         }
@@ -236,15 +239,12 @@ void VelocityMultigrid<dim>::cell_dof_indices (const FlowCell    &cell,
       fine_system (2 * dim * n2);
   coarse_cell->get_dof_indices (coarse_system);
   fine_cell->get_dof_indices (fine_system);
-  const FESystem<dim> &fine_fe = op->velocity_element ();
   for (unsigned int c = 0; c < 2 * dim; ++c)
   {
     for (unsigned int a = 0; a < n1; ++a)
-      local.local_dof_indices[0][c * n1 + a] =
-          coarse_system[coarse_fe.component_to_system_index (c, a)];
+      local.local_dof_indices[0][c * n1 + a] = coarse_system[coarse_components[c][a]];
     for (unsigned int a = 0; a < n2; ++a)
-      local.local_dof_indices[1][c * n2 + a] =
-          fine_system[fine_fe.component_to_system_index (c, a)];
+      local.local_dof_indices[1][c * n2 + a] = fine_system[fine_components[c][a]];
   }
 }
 

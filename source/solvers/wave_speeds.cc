@@ -1,3 +1,4 @@
+#include <wetbed/solvers/component_table.h>
 #include <wetbed/solvers/wave_speeds.h>
 
 #include <deal.II/base/mpi.h>
@@ -45,6 +46,7 @@ WaveSpeeds evaluate_wave_speeds (const SolverState<dim> &s)
   std::vector<types::global_dof_index> dofs (s.flow_fe.n_dofs_per_cell ()),
       alpha_cell_dofs (s.alpha_fe.n_dofs_per_cell ());
   const unsigned int n_nodes   = s.flow_fe.base_element (0).n_dofs_per_cell ();
+  const auto         component = component_to_system_table (s.flow_fe);
   double             gas_speed = 0, solids_speed = 0, sound_speed = 0, rate = 0;
   auto               alpha_cell = s.alpha_dof_handler.begin_active ();
   for (const auto &cell : s.flow_dof_handler.active_cell_iterators ())
@@ -60,11 +62,8 @@ WaveSpeeds evaluate_wave_speeds (const SolverState<dim> &s)
         double g2 = 0, s2 = 0;
         for (unsigned int d = 0; d < dim; ++d)
         {
-          g2 += std::pow (
-              s.flow_solution (dofs[s.flow_fe.component_to_system_index (d, node)]), 2);
-          s2 += std::pow (
-              s.flow_solution (dofs[s.flow_fe.component_to_system_index (dim + d, node)]),
-              2);
+          g2 += std::pow (s.flow_solution (dofs[component[d][node]]), 2);
+          s2 += std::pow (s.flow_solution (dofs[component[dim + d][node]]), 2);
         }
         gas = std::max (gas, std::sqrt (g2));
         if (node < GeometryInfo<dim>::vertices_per_cell &&

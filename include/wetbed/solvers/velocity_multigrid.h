@@ -123,12 +123,14 @@ private:
                          unsigned int    n2,
                          LocalData      &local) const;
 
-  const LinearSolverParameters                &parameters;
-  const bool                                   exact_coarse;
-  bool                                         coarse_pending = false; // in this update
-  bool                                         coarse_current = false; // after it
-  const MatrixFreeFlowOperator<dim>           *op             = nullptr;
-  dealii::FESystem<dim>                        coarse_fe;
+  const LinearSolverParameters      &parameters;
+  const bool                         exact_coarse;
+  bool                               coarse_pending = false; // in this update
+  bool                               coarse_current = false; // after it
+  const MatrixFreeFlowOperator<dim> *op             = nullptr;
+  dealii::FESystem<dim>              coarse_fe;
+  // component_to_system_index of the coarse and the fine velocity element, as tables
+  std::vector<std::vector<unsigned int>>       coarse_components, fine_components;
   dealii::FE_Q<dim>                            fine_scalar;
   dealii::DoFHandler<dim>                      coarse_dofs;
   dealii::AffineConstraints<double>            coarse_constraints;
