@@ -69,8 +69,8 @@ g = lambda key, fmt="{:.4g}": fmt.format(stats[key]) if key in stats else "n/a" 
 lines = [
     f"Command: `python3 benchmarks/bubble_analytics.py --end-time {stats['end_time']:g}` (default case: KTGF, Θ PDE,",
     "Johnson–Jackson walls, 10 × 60 cells, serial; bubbles analysed every 5 steps with a",
-    "4 mm minimum diameter; statistics from t = " + f"{args.start:g} s; run on the 2-core machine with builds",
-    "and tests sharing it part of the time, so the wall time is an upper bound).",
+    "4 mm minimum diameter; statistics from t = " + f"{args.start:g} s; run it alone on the machine: its",
+    "wall time is in the table).",
     "",
     "| quantity | value |",
     "|---|---|",
