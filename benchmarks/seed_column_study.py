@@ -30,7 +30,8 @@ Runs are resumable (checkpoints every 10 min of wall time): call again to contin
 run stopped with SIGUSR2 is continued. Each run's monitors.csv (gzipped), bubble summary
 and events, and ECT slab signal are kept in benchmarks/results/seed_column_study/NAME/
 with its summary.json; --table rewrites the table of doc/seed_column_study.md and the
-picture doc/images/seed_column_fi.png from what is stored, without running.
+picture doc/images/seed_column_fi.png without running (the runs whose folders are in
+build/ summarized afresh, the others from what is stored).
 --pictures also draws, from the runs' fields in build/, the vertical slices of alpha_s
 at four times of the window and the alpha_g = 0.8 iso-surface at the end
 (scripts/render_fields.py) of the dry run and of the loadings 0.055 and 0.138, and the
@@ -177,12 +178,14 @@ def table(levels, end_time):
         if s is None:
             lines.append(f"| {loading} | not run yet | | | | | | | | | |")
             continue
+        finished = s["reached"] >= s["end"] - 1e-9
+        verdicts = seed_statements(loading, s, dry) if finished else "not compared before the run ends"
         lines.append(
             f"| {loading} | {s['reached']:.2f} / {s['end']:g} s | {s['fi_probe']:.2f} ({s['fi_inlet']:.2f}) | "
             f"{s['frequency']:.2f} | {s['bubble_count']:.2f} | {100 * s['bubble_diameter']:.2f} | "
             f"{s['splittings']:.2f}, {s['coalescences']:.2f} | {s['expansion']:.2f} | {s['regime']} | "
-            f"{seed_statements(loading, s, dry)} | {s['wall']:.0f} ({s['wall'] / max(s['reached'], 1e-9):.0f}) |")
-    figure_lines = picture(stored, levels)
+            f"{verdicts} | {s['wall']:.0f} ({s['wall'] / max(s['reached'], 1e-9):.0f}) |")
+    figure_lines = picture({k: v for k, v in stored.items() if v["reached"] >= v["end"] - 1e-9}, levels)
     return lines + figure_lines
 
 
@@ -289,8 +292,18 @@ def main():
         store(folder, name, summary)
         print(f"{name}: exit {code}, t = {summary['reached']:.3f} s, wall {wall:.0f} s, {summary['regime']}",
               flush=True)
-        if code not in (0, 4):
+        if code == 4:  # stopped with a checkpoint (SIGUSR2): the later runs wait for the next call
+            print(f"{name}: stopped with a checkpoint; run the same command again to continue", flush=True)
+            break
+        if code != 0:
             print(f"{name}: stopped with status {code}; see {name}.log and failure_report.txt", flush=True)
+    if args.table:  # the runs present in build/ summarized afresh (a run stopped by hand included)
+        for loading in args.only or LOADINGS:
+            name = run_name(loading, args.levels)
+            folder, wall_file = os.path.join(work, name), os.path.join(work, name + ".wall")
+            if os.path.exists(os.path.join(folder, "monitors.csv")) and os.path.exists(wall_file):
+                store(folder, name, summarize(folder, args.end_time, args.window,
+                                              float(open(wall_file).read()), None))
     lines = table(args.levels, args.end_time)
     if args.pictures:
         lines += [""] + pictures(args.levels, work, args.window)
