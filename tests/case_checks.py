@@ -970,6 +970,20 @@ elif check == "seed_column":
     expect(same_rows(profile(half, "radial_at_0.03m.csv"), radial_all) and
            same_rows(profile(half, "plane_at_0.03m.csv"), plane_all),
            "resumed: the profile files as the unbroken run's (no duplicate rows)")
+    # with adaptive refinement (levels 0-1, every step) the ECT pixels are located again
+    # after each mesh change: those inside the column are found in the refined cells,
+    # those outside read NaN (they are not looked for again: refinement keeps the domain)
+    adaptive = os.path.join(work, "seed_column_amr")
+    amr = ("subsection adaptive refinement\n set enabled = true\n set minimum level = 0\n"
+           " set maximum level = 1\n set interval = 1\nend\n")
+    amr_rows = run("column_3d", geometry + instruments + amr + end.format(0.004), 2, adaptive)
+    amr_images = list(csv.reader(open(os.path.join(adaptive, "ect_images.csv"))))[1:]
+    found = [[v != "nan" for v in row[1:]] for row in amr_images]
+    values = [float(v) for row in amr_images for v in row[1:] if v != "nan"]
+    expect(max(r["active_cells"] for r in amr_rows) > 21 * 12 and len(amr_images) == 5 and
+           all(f == [v != "nan" for v in images[1][1:]] for f in found) and all(0 < a <= 0.61 for a in values),
+           f"AMR ({int(max(r['active_cells'] for r in amr_rows))} cells at most): {len(amr_images)} frames, each "
+           f"with the uniform run's {sum(found[0])} pixels inside the column, alpha_s {min(values):.4f} .. {max(values):.4f}")
     # the frames stacked in time, both runs side by side (the seed's Fig. 4)
     picture = os.path.join(work, "seed_column_ect_stack.png")
     if os.path.exists(picture):

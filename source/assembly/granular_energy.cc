@@ -89,7 +89,8 @@ struct GranularEnergyAssembler<dim>::Scratch
                    face_quadrature,
                    update_values | update_normal_vectors),
         n (inputs.alpha_fe.n_dofs_per_cell ()), n_q (quadrature.size ()),
-        cell_matrix (n, n), cell_rhs (n), cell_mass (n), dofs (n), a (n_q), t_now (n_q),
+        cell_matrix (n, n), cell_rhs (n), cell_mass (n),
+        flow_local (inputs.flow_fe.n_dofs_per_cell ()), dofs (n), a (n_q), t_now (n_q),
         t_old (n_q), t_old2 (n_q), ug (n_q), us (n_q), grad_us (n_q),
         a_face (face_quadrature.size ()), t_face (face_quadrature.size ()),
         us_face (face_quadrature.size ()), gas (0), solids (dim),
@@ -112,9 +113,13 @@ struct GranularEnergyAssembler<dim>::Scratch
     theta_values.get_function_values (theta, t_now);
     theta_values.get_function_values (inputs.theta_old, t_old);
     theta_values.get_function_values (inputs.theta_old2, t_old2);
-    flow_values[gas].get_function_values (inputs.flow_solution, ug);
-    flow_values[solids].get_function_values (inputs.flow_solution, us);
-    flow_values[solids].get_function_gradients (inputs.flow_solution, grad_us);
+    // the cell's flow DoF values read once (a Trilinos vector looks every entry up by
+    // its global index)
+    flow_cell->get_dof_values (inputs.flow_solution, flow_local);
+    const auto local = make_array_view (flow_local.begin (), flow_local.end ());
+    flow_values[gas].get_function_values_from_local_dof_values (local, ug);
+    flow_values[solids].get_function_values_from_local_dof_values (local, us);
+    flow_values[solids].get_function_gradients_from_local_dof_values (local, grad_us);
     cell->get_dof_indices (dofs);
     cell_matrix = 0;
     cell_rhs    = 0;
@@ -127,7 +132,7 @@ struct GranularEnergyAssembler<dim>::Scratch
   FEFaceValues<dim>                    theta_face, flow_face;
   const unsigned int                   n, n_q;
   FullMatrix<double>                   cell_matrix;
-  Vector<double>                       cell_rhs, cell_mass;
+  Vector<double>                       cell_rhs, cell_mass, flow_local;
   std::vector<types::global_dof_index> dofs;
   std::vector<double>                  a, t_now, t_old, t_old2;
   std::vector<Tensor<1, dim>>          ug, us;

@@ -56,10 +56,41 @@ template <int dim>
 void FieldSampler<dim>::locate (const SolverState<dim> &s)
 {
   located = where (s);
-  evaluation.reinit (located, s.triangulation, s.mapping);
-  found.resize (located.size ());
-  for (unsigned int i = 0; i < located.size (); ++i)
-    found[i] = evaluation.point_found (i);
+  evaluated.clear ();
+  // (a locator that returns another number of points is located afresh)
+  located_before = located_before && located.size () == found.size ();
+  if (located_before)
+    evaluated = inside;
+  else
+    for (unsigned int i = 0; i < located.size (); ++i)
+      evaluated.push_back (i);
+  std::vector<Point<dim>> points;
+  for (const unsigned int i : evaluated)
+    points.push_back (located[i]);
+  evaluation.reinit (points, s.triangulation, s.mapping);
+  found.assign (located.size (), false);
+  for (unsigned int j = 0; j < evaluated.size (); ++j)
+    found[evaluated[j]] = evaluation.point_found (j);
+  if (!located_before)
+  {
+    inside.clear ();
+    for (unsigned int i = 0; i < located.size (); ++i)
+      if (found[i])
+        inside.push_back (i);
+  }
+  located_before = true;
+}
+
+template <int dim>
+template <typename Value>
+std::vector<Value> FieldSampler<dim>::expand (const std::vector<Value> &values,
+                                              const Value              &nan) const
+{
+  std::vector<Value> all (located.size (), nan);
+  for (unsigned int j = 0; j < evaluated.size (); ++j)
+    if (found[evaluated[j]])
+      all[evaluated[j]] = values[j];
+  return all;
 }
 
 template <int dim>
@@ -76,12 +107,8 @@ std::vector<double> FieldSampler<dim>::scalar (const SolverState<dim> &s,
                                                const AlphaVector      &field)
 {
   points (s);
-  std::vector<double> values =
-      VectorTools::point_values<1> (evaluation, s.alpha_dof_handler, field);
-  for (unsigned int i = 0; i < values.size (); ++i)
-    if (!found[i])
-      values[i] = std::numeric_limits<double>::quiet_NaN ();
-  return values;
+  return expand (VectorTools::point_values<1> (evaluation, s.alpha_dof_handler, field),
+                 std::numeric_limits<double>::quiet_NaN ());
 }
 
 template <int dim>
@@ -89,13 +116,12 @@ std::vector<typename FieldSampler<dim>::FlowValue>
 FieldSampler<dim>::flow (const SolverState<dim> &s, const BlockVector &field)
 {
   points (s);
-  std::vector<FlowValue> values =
-      VectorTools::point_values<2 * dim + 1> (evaluation, s.flow_dof_handler, field);
-  for (unsigned int i = 0; i < values.size (); ++i)
-    if (!found[i])
-      for (unsigned int c = 0; c < 2 * dim + 1; ++c)
-        values[i][c] = std::numeric_limits<double>::quiet_NaN ();
-  return values;
+  FlowValue nan;
+  for (unsigned int c = 0; c < 2 * dim + 1; ++c)
+    nan[c] = std::numeric_limits<double>::quiet_NaN ();
+  return expand (
+      VectorTools::point_values<2 * dim + 1> (evaluation, s.flow_dof_handler, field),
+      nan);
 }
 
 template struct HorizontalFrame<2>;

@@ -33,8 +33,12 @@ HorizontalFrame<dim> horizontal_frame (const SolverState<dim> &state);
  * Fields evaluated at a set of points, distributed: the points come from `where` (which
  * may read the mesh), are located once per mesh with deal.II's RemotePointEvaluation
  * (each rank evaluates the points in its cells, whoever asked for them) and again after
- * every mesh change. A point outside the domain reads NaN. Evaluations are collective
- * (source/postprocess/field_sampler.cc).
+ * every mesh change. A point outside the domain reads NaN. Refinement does not move the
+ * domain, so after a mesh change only the points found at the first location are
+ * looked for again: deal.II's search for a point outside every cell falls back to a
+ * scan of all vertices, with an exception per cell tried (for the 8,192 points of an
+ * ECT slab in a cylinder, whose corners lie outside, ~10 s on 2 ranks). Evaluations are
+ * collective (source/postprocess/field_sampler.cc).
  */
 template <int dim>
 class FieldSampler
@@ -64,5 +68,12 @@ private:
   std::vector<dealii::Point<dim>>                    located;
   dealii::Utilities::MPI::RemotePointEvaluation<dim> evaluation;
   std::vector<bool>                                  found;
+  // the indices of the points `evaluation` holds, and of those found the first time
+  std::vector<unsigned int> evaluated, inside;
+  bool                      located_before = false;
+
+  /** values of the evaluated points at their places among all, NaN elsewhere */
+  template <typename Value>
+  std::vector<Value> expand (const std::vector<Value> &values, const Value &nan) const;
 };
 } // namespace wetbed
