@@ -1,5 +1,6 @@
 #include <wetbed/core/input_error.h>
 #include <wetbed/mesh/cell_weights.h>
+#include <wetbed/solvers/owned_first_layout.h>
 #include <wetbed/solvers/two_fluid_solver.h>
 #include <wetbed/solvers/velocity_near_null_space.h>
 
@@ -68,6 +69,7 @@ void TwoFluidSolver<dim>::setup_dofs ()
   make_flow_constraints (0.0);
 
   fields.flow.reinit (flow_owned, flow_relevant, communicator);
+  list_owned_entries_first (fields.flow, flow_owned); // their copies share the layout
   fields.flow_old.reinit (fields.flow);
   fields.flow_old2.reinit (fields.flow);
   if (time_averages) // a mesh change or a resume transfers them afterwards
