@@ -153,10 +153,18 @@ void TwoFluidSolver<dim>::report_mesh (
         Utilities::MPI::min_max_avg (static_cast<double> (cells), communicator);
     const auto w =
         Utilities::MPI::min_max_avg (static_cast<double> (wall_faces), communicator);
+    // what each product of the flow operator exchanges: the values of the DoFs on a
+    // rank's cells that another rank owns (imported before, sent back after the loop)
+    const double owned = flow_dof_handler.locally_owned_dofs ().n_elements ();
+    const double active =
+        DoFTools::extract_locally_active_dofs (flow_dof_handler).n_elements ();
+    const auto g = Utilities::MPI::min_max_avg (active - owned, communicator);
+    const auto o = Utilities::MPI::min_max_avg (owned, communicator);
     pcout << "Partition: owned cells per rank " << c.min << "-" << c.max
           << ", wall faces per rank " << w.min << "-" << w.max
-          << " (mesh/wall face weight " << parameters.mesh.wall_face_weight << ")"
-          << std::endl;
+          << " (mesh/wall face weight " << parameters.mesh.wall_face_weight
+          << "); flow DoFs per rank " << o.min << "-" << o.max << ", ghost flow DoFs "
+          << g.min << "-" << g.max << " (" << g.sum << " in all)" << std::endl;
   }
 }
 
