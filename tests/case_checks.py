@@ -796,6 +796,22 @@ elif check == "amr":
     shutil.copytree(os.path.join(work, "amr_1"), folder)
     rows = run("bubbling_bed_2d", weighted, 2, folder, resume=True)  # repartitioned by cost when it adapts
     same_monitors(one, rows, "AMR run resumed at step 20 on 2 ranks", 1e-4)
+    # a run spun up on the fixed base mesh to 0.015 s goes on with AMR from its final
+    # checkpoint: the mesh adapts after the resume, the solids mass and bounds hold
+    fixed = (overrides.replace(" set enabled = true\n", " set enabled = false\n")
+             .replace("set end time = 0.03", "set end time = 0.015").replace("set at end = false", "set at end = true"))
+    base = run("bubbling_bed_2d", fixed, 1, os.path.join(work, "amr_spun_up"))
+    folder = os.path.join(work, "amr_after_fixed")
+    shutil.rmtree(folder, ignore_errors=True)
+    shutil.copytree(os.path.join(work, "amr_spun_up"), folder)
+    rows = run("bubbling_bed_2d", overrides, 1, folder, resume=True)
+    last = int(base[-1]["step"])
+    before = {int(r["active_cells"]) for r in rows if int(r["step"]) <= last}
+    after = [int(r["active_cells"]) for r in rows if int(r["step"]) > last]
+    expect(before == {int(base[0]["active_cells"])} and after and any(c not in before for c in after),
+           f"the fixed mesh ({before} cells to step {last}) adapts after the resume: {after[:3]} ... {after[-1:]}")
+    bounds_and_mass(rows, 0.61, 1e-12)
+    expect(abs(float(rows[-1]["time"]) - 0.03) < 1e-9, f"the resumed run reaches 0.03 s (t = {rows[-1]['time']})")
 elif check == "failure":
     # issue 7: a step that cannot be saved by halving dt stops the run cleanly: status 3,
     # a report naming the cause and where the failed state is extreme, the last good

@@ -45,9 +45,10 @@ using namespace dealii;
 namespace
 {
 /** The parameters that may differ on resume: when the run ends, how it steps and
- * solves, what and how often it writes, how the mesh is partitioned, and the
- * checkpoints themselves; everything else defines the discrete problem or the files
- * being continued. */
+ * solves, what and how often it writes, how the mesh is partitioned and adapted (a run
+ * spun up on a fixed mesh may go on with adaptive refinement from its state, and the
+ * reverse), and the checkpoints themselves; everything else defines the problem or the
+ * files being continued. */
 bool resume_may_change (const std::string &name)
 {
   static const std::vector<std::string> names = {
@@ -70,8 +71,11 @@ bool resume_may_change (const std::string &name)
       "output/overwrite",
       "output/progress interval",
       "mesh/wall face weight"};
-  static const std::vector<std::string> subsections = {
-      "checkpoint/", "linear solver/", "spectrum/", "divergence checks/"};
+  static const std::vector<std::string> subsections = {"checkpoint/",
+                                                       "linear solver/",
+                                                       "spectrum/",
+                                                       "divergence checks/",
+                                                       "adaptive refinement/"};
   if (std::find (names.begin (), names.end (), name) != names.end ())
     return true;
   for (const std::string &s : subsections)
