@@ -27,9 +27,11 @@ scaling") and benchmarks/results/large_column/summary.json:
 
 Resumable: the 0.2 s run writes checkpoints every 10 min of wall time; call again to
 continue it (SIGUSR2 to its ranks stops it with a checkpoint). The spans are rerun each
-call. --report rewrites the doc section from what is stored, without running.
+call; --spans-only runs them from where the run stopped, without continuing it (the
+table then shows how far the run is). --report rewrites the doc section from what is
+stored, without running.
 
-usage: python3 benchmarks/large_column.py [--end-time 0.2] [--span 0.006] [--report]
+usage: python3 benchmarks/large_column.py [--end-time 0.2] [--span 0.006] [--spans-only] [--report]
 (build first: bash scripts/build.sh; ~1.5 h on 2 cores, nothing else running; ~5 GB)
 """
 import argparse
@@ -175,7 +177,7 @@ def report(stored):
         "(2 ranks, the base mesh without refinement; the spans one after the other on the same 2 cores).",
         "",
         "| run | figure |", "|---|---|",
-        f"| `prm/seed000_large_column.prm` dry from rest, 2 ranks | {run['simulated']:.3f} s simulated in "
+        f"| `prm/seed000_large_column.prm` dry from rest, 2 ranks | {run['simulated']:.3f} s of {run['end_time']:g} s simulated in "
         f"{run['steps']} steps ({run['rejected']} rejected), {run['wall']:.0f} s of wall time: "
         f"**{run['wall'] / run['simulated']:.0f} s per simulated second** |",
         f"| cost per step | {run['wall'] / run['steps']:.2f} s: {1e6 * run['wall'] / run['steps'] / run['cells']:.0f} µs "
@@ -223,6 +225,8 @@ def main():
     parser.add_argument("--end-time", type=float, default=0.2)
     parser.add_argument("--span", type=float, default=0.006)
     parser.add_argument("--report", action="store_true", help="rewrite the doc section from what is stored")
+    parser.add_argument("--spans-only", action="store_true",
+                        help="the spans from where the run stopped (its checkpoint), the run not continued")
     parser.add_argument("--case", default=CASE, help=argparse.SUPPRESS)  # the script's own check, on a small case
     args = parser.parse_args()
     CASE = args.case
@@ -236,14 +240,19 @@ def main():
     if not args.report:
         env = dict(os.environ, OMPI_MCA_rmaps_base_oversubscribe="1")
         folder, prm = os.path.join(work, "run_2"), os.path.join(work, "run_2.prm")
-        open(prm, "w").write(case_text(folder, args.end_time))
-        code, wall = run_resumable(["mpirun", "-np", "2", os.path.join(root, "build", "wetbed"), prm], folder,
-                                   os.path.join(work, "run_2.log"), os.path.join(work, "run_2.wall"), True, env,
-                                   args.end_time)
-        if code == 4:
-            sys.exit("the run stopped with a checkpoint: call again to continue it")
-        if code != 0:
-            sys.exit(f"the run failed (exit {code}): see {work}/run_2.log")
+        wall_file = os.path.join(work, "run_2.wall")
+        if args.spans_only:
+            if not os.path.isdir(os.path.join(folder, "checkpoint")):
+                sys.exit("--spans-only: the run has no checkpoint yet")
+            wall = float(open(wall_file).read())
+        else:
+            open(prm, "w").write(case_text(folder, args.end_time))
+            code, wall = run_resumable(["mpirun", "-np", "2", os.path.join(root, "build", "wetbed"), prm], folder,
+                                       os.path.join(work, "run_2.log"), wall_file, True, env, args.end_time)
+            if code == 4:
+                sys.exit("the run stopped with a checkpoint: call again to continue it")
+            if code != 0:
+                sys.exit(f"the run failed (exit {code}): see {work}/run_2.log")
         m = wetbed_results.monitors(folder)
         text = open(os.path.join(work, "run_2.log")).read()
         run = {"end_time": args.end_time, "simulated": m["time"][-1], "steps": int(m["step"][-1]),
