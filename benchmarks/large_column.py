@@ -19,10 +19,11 @@ scaling") and benchmarks/results/large_column/summary.json:
   - the strong scaling over the span: wall per step on 1 and 2 ranks (the ECT sensor's
     timer taken out: its first location of the slab's points is a one-off of each run
     start), speed-up and efficiency;
-  - a cost model for more ranks: wall per step W(P) = W1/P + n(P) o, with o = W2 - W1/2
-    the 2-rank overhead (communication, waiting, duplicated work) and n(P) the number of
-    neighbours of a rank (1 for 2 ranks, 2 beyond: the partition cuts the column into
-    slabs along its axis); memory per rank M(P) = a + b N / P from the 1- and 2-rank
+  - a cost model for more ranks (model()): the 1-rank wall per step divided among the
+    ranks with the 2-rank factor (imbalance and the shared memory bus), plus the measured
+    messages across two interfaces per rank (the partition cuts the column into slabs
+    along its axis) and the measured reductions, over a network of --bandwidth (10 GB/s)
+    and --latency (2 us); memory per rank M(P) = a + b N / P from the 1- and 2-rank
     peaks. Model rows are marked as such.
 
 Resumable: the 0.2 s run writes checkpoints every 10 min of wall time; call again to
@@ -36,6 +37,7 @@ usage: python3 benchmarks/large_column.py [--end-time 0.2] [--span 0.006] [--spa
 """
 import argparse
 import json
+import math
 import os
 import re
 import shutil
@@ -150,27 +152,41 @@ def span(work, source, ranks, end_time, env):
     return figures
 
 
-def model(w1, w2, memory1, memory2, dofs):
-    """Wall per step and memory per rank for MODEL_RANKS from the 1- and 2-rank figures."""
-    overhead = w2 - w1 / 2
+def model(w1, w2, memory1, memory2, dofs, mpi, steps, bandwidth, latency):
+    """Wall per step and memory per rank for MODEL_RANKS from the 1- and 2-rank figures:
+    W(P) = f W1/P + n(P) (V/2 / B + M/2 L) + K ceil(log2 P) L, with f = W2 / (W1/2) the
+    2-rank factor (the ranks' imbalance and their sharing of one node's memory bus, the
+    shared-memory messages included), V and M the bytes and messages per step across one
+    partition interface (both directions), n(P) the interfaces of a rank (1 for 2 ranks,
+    2 beyond: slabs along the axis), K the collective operations per step (on 2 ranks
+    each sends one message per operation), B and L the network's bandwidth and latency."""
+    factor = w2 / (w1 / 2)
+    volume, messages = mpi["p2p_bytes"] / steps, mpi["p2p_messages"] / steps
+    collectives = mpi["collective_messages"] / steps / 2
     fixed = memory2 - memory1  # MB a rank adds: memory2 = 2 a + b N, memory1 = a + b N
     per_dof = (memory1 - fixed) / dofs
     rows = []
     for p in MODEL_RANKS:
-        w = w1 / p + 2 * overhead
-        rows.append({"ranks": p, "per_step": w, "efficiency": w1 / (p * w),
-                     "memory_per_rank": fixed + per_dof * dofs / p})
-    return overhead, fixed, per_dof, rows
+        neighbours = 2
+        communication = neighbours * (volume / 2 / bandwidth + messages / 2 * latency)
+        reductions = collectives * math.ceil(math.log2(p)) * latency
+        w = factor * w1 / p + communication + reductions
+        rows.append({"ranks": p, "per_step": w, "efficiency": w1 / (p * w), "communication": communication,
+                     "reductions": reductions, "memory_per_rank": fixed + per_dof * dofs / p})
+    return {"factor": factor, "volume": volume, "messages": messages, "collectives": collectives,
+            "fixed": fixed, "per_dof": per_dof, "rows": rows}
 
 
-def report(stored):
+def report(stored, bandwidth, latency):
     run, spans = stored["run"], stored["spans"]
     one, two = spans["1"], spans["2"]
     part = two["partition"]
     mpi = two.get("mpi") or {}
     w1, w2 = one["per_step"], two["per_step"]
     dofs = two["memory"][0]
-    overhead, fixed, per_dof, rows = model(w1, w2, one["memory"][2], two["memory"][2], dofs)
+    fit = model(w1, w2, one["memory"][2], two["memory"][2], dofs, mpi, two["steps"], bandwidth, latency)
+    layers = int(re.search(r"n_layers: (\d+)", read_case(CASE)).group(1))
+    planes = part["ghost_dofs_all"] / (dofs / (2 * layers + 1))  # Q2 node planes along the axis
     dt = run["simulated"] / run["steps"]
     lines = [
         f"Command: `python3 benchmarks/large_column.py --end-time {run['end_time']:g} --span {stored['span']:g}` "
@@ -191,7 +207,8 @@ def report(stored):
         f"| partition (2 ranks) | owned cells {part['cells'][0]:,.0f}–{part['cells'][1]:,.0f}, wall faces "
         f"{part['wall_faces'][0]:,.0f}–{part['wall_faces'][1]:,.0f}, owned flow DoFs {part['owned_dofs'][0]:,.0f}–"
         f"{part['owned_dofs'][1]:,.0f}, ghost flow DoFs {part['ghost_dofs_all']:,.0f} in all "
-        f"({100 * part['ghost_dofs_all'] / dofs:.1f}% of the flow DoFs: one cross-section of the column) |",
+        f"({100 * part['ghost_dofs_all'] / dofs:.1f}% of the flow DoFs, those of {planes:.1f} planes of Q2 nodes across "
+        "the column: the partition cuts it into slabs along its axis) |",
     ]
     if mpi:
         steps = two["steps"]
@@ -203,8 +220,12 @@ def report(stored):
     lines += [
         "",
         f"Strong scaling over the same {stored['span'] * 1e3:g} ms resumed at t = {run['simulated']:.3f} s (wall per "
-        "step with the ECT sensor's one-off location taken out; model rows: W(P) = W1/P + 2 o, "
-        f"o = W2 − W1/2 = {overhead:.2f} s; memory per rank {fixed:,.0f} MB + {1e3 * per_dof:.2f} kB per flow DoF / P):",
+        "step with the ECT sensor's one-off location taken out; s per simulated s at the run's mean Δt so far). "
+        f"Model rows: W(P) = f W1/P + 2 (V/2/B + M/2 L) + K ⌈log2 P⌉ L with the 2-rank factor f = W2/(W1/2) = "
+        f"{fit['factor']:.3f}, V = {fit['volume'] / 1e6:.1f} MB and M = {fit['messages']:,.0f} messages per step across "
+        f"one interface, K = {fit['collectives']:,.0f} collective operations per step (measured above), and a network "
+        f"of B = {bandwidth / 1e9:g} GB/s and L = {latency * 1e6:g} µs (assumed); memory per rank "
+        f"{fit['fixed']:,.0f} MB + {1e3 * fit['per_dof']:.2f} kB per flow DoF / P:",
         "",
         "| ranks | wall per step (s) | speed-up | efficiency | s per simulated s | memory per rank (MB) | source |",
         "|---|---|---|---|---|---|---|",
@@ -213,9 +234,10 @@ def report(stored):
         f"| 2 | {w2:.2f} | {w1 / w2:.2f} | {w1 / (2 * w2):.2f} | {w2 / dt:,.0f} | {two['memory'][1]:,.0f} | measured "
         f"({two['steps']} steps, FGMRES {two['fgmres_per_step']:.2f} per step) |",
     ]
-    for r in rows:
+    for r in fit["rows"]:
         lines.append(f"| {r['ranks']} | {r['per_step']:.2f} | {w1 / r['per_step']:.1f} | {r['efficiency']:.2f} | "
-                     f"{r['per_step'] / dt:,.0f} | {r['memory_per_rank']:,.0f} | model |")
+                     f"{r['per_step'] / dt:,.0f} | {r['memory_per_rank']:,.0f} | model (messages "
+                     f"{1e3 * r['communication']:.0f} ms, reductions {1e3 * r['reductions']:.0f} ms) |")
     return lines
 
 
@@ -225,6 +247,8 @@ def main():
     parser.add_argument("--end-time", type=float, default=0.2)
     parser.add_argument("--span", type=float, default=0.006)
     parser.add_argument("--report", action="store_true", help="rewrite the doc section from what is stored")
+    parser.add_argument("--bandwidth", type=float, default=10e9, help="the model's network bandwidth, B/s")
+    parser.add_argument("--latency", type=float, default=2e-6, help="the model's network latency, s")
     parser.add_argument("--spans-only", action="store_true",
                         help="the spans from where the run stopped (its checkpoint), the run not continued")
     parser.add_argument("--case", default=CASE, help=argparse.SUPPRESS)  # the script's own check, on a small case
@@ -266,7 +290,7 @@ def main():
             spans[str(ranks)] = span(work, folder, ranks, last_time(folder) + args.span, env)
             print(f"span on {ranks} rank(s): {spans[str(ranks)]['per_step']:.2f} s per step", flush=True)
         json.dump({"run": run, "spans": spans, "span": args.span}, open(stored_path, "w"), indent=1)
-    lines = report(json.load(open(stored_path)))
+    lines = report(json.load(open(stored_path)), args.bandwidth, args.latency)
     print("\n".join(lines))
     if tag == "large_column":
         replace_doc_section(root, "large_column", "The large column: cost, memory and scaling", lines)
