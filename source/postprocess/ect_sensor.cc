@@ -121,12 +121,18 @@ void EctSensor<dim>::reopen (
 }
 
 template <int dim>
-void EctSensor<dim>::record (const SolverState<dim> &s)
+void EctSensor<dim>::record (const SolverState<dim> &s, const double next_step)
 {
+  const double rate = parameters.frame_rate;
+  // a step shorter than planned (rejected, or the last) ends earlier: if even the
+  // planned one ends before the next frame, this step's image is not needed
+  const bool passed = next_frame <= s.time * rate + 1e-9;
+  if (!passed && next_frame > (s.time + next_step) * rate + 2e-9)
+    return;
   const std::vector<double> current = sample (s);
-  for (; next_frame <= s.time * parameters.frame_rate + 1e-9; ++next_frame)
+  for (; next_frame <= s.time * rate + 1e-9; ++next_frame)
   {
-    const double        frame_time = next_frame / parameters.frame_rate;
+    const double        frame_time = next_frame / rate;
     const double        w          = s.time > previous_time
                                          ? (frame_time - previous_time) / (s.time - previous_time)
                                          : 1;

@@ -114,7 +114,7 @@ void TwoFluidSolver<dim>::record_ect ()
     return;
   TimerOutput::Scope scope (timer, "ECT sensor");
   fields.alpha.update_ghost_values ();
-  ect_sensor->record (state ());
+  ect_sensor->record (state (), stepping.time_step); // (the next step's, planned)
   if (Utilities::MPI::broadcast (communicator, ect_sensor->writing_failed (), 0))
     throw std::runtime_error (
         "output/folder: cannot append to '" + parameters.output.folder +

@@ -37,8 +37,11 @@ public:
                const std::vector<std::pair<std::string, unsigned long long>> &appended,
                const SolverState<dim>                                        &state);
 
-  /** After an accepted step: the frames since the last call; collective. */
-  void record (const SolverState<dim> &state);
+  /** After an accepted step: the frames since the last call; collective. The fields
+   * are sampled only at a step that passes a frame time and at the step before one the
+   * next step (at most `next_step` long) may pass: a frame interpolates between these two
+   * (on an adapted mesh each sample after a mesh change locates the pixels anew). */
+  void record (const SolverState<dim> &state, double next_step);
 
   /** (file name, bytes written) of both files (rank 0; 0 elsewhere). */
   std::vector<std::pair<std::string, unsigned long long>> file_lengths ();
