@@ -21,10 +21,10 @@ Each row is compared with what the seed reports (dry FI ~ 1; FI below dry at 0.0
 below 0.08, slugging from 0.08 to 0.12, de-fluidized above).
 
 --levels L runs the case with L levels of adaptive refinement (the shipped case has 1);
-the default 0 is the case's base mesh without refinement: the study's seven runs at one
-level would cost about ten times as much on 2 cores (the AMR column of
-doc/benchmarks.md "Stress benchmark: 3D columns"), and item 6 of the issue (AMR against
-uniform on two of these runs) measures what the refinement changes.
+the default 0 is the case's base mesh without refinement: in the bubbling state one level
+costs about 2.7 times as much per step on 2 cores (doc/seed_column_study.md), and item 6
+of the issue (AMR against uniform on two of these runs) measures what the refinement
+changes.
 
 Runs are resumable (checkpoints every 10 min of wall time): call again to continue; a
 run stopped with SIGUSR2 is continued. Each run's monitors.csv (gzipped), bubble summary
