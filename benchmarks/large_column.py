@@ -189,7 +189,8 @@ def report(stored, bandwidth, latency):
     planes = part["ghost_dofs_all"] / (dofs / (2 * layers + 1))  # Q2 node planes along the axis
     dt = run["simulated"] / run["steps"]
     lines = [
-        f"Command: `python3 benchmarks/large_column.py --end-time {run['end_time']:g} --span {stored['span']:g}` "
+        f"Command: `python3 benchmarks/large_column.py --end-time {run['end_time']:g} --span {stored['span']:g}"
+        f"{' --spans-only' if stored.get('spans_only') else ''}` "
         "(2 ranks, the base mesh without refinement; the spans one after the other on the same 2 cores).",
         "",
         "| run | figure |", "|---|---|",
@@ -289,7 +290,8 @@ def main():
         for ranks in (1, 2):
             spans[str(ranks)] = span(work, folder, ranks, last_time(folder) + args.span, env)
             print(f"span on {ranks} rank(s): {spans[str(ranks)]['per_step']:.2f} s per step", flush=True)
-        json.dump({"run": run, "spans": spans, "span": args.span}, open(stored_path, "w"), indent=1)
+        json.dump({"run": run, "spans": spans, "span": args.span, "spans_only": args.spans_only},
+                  open(stored_path, "w"), indent=1)
     lines = report(json.load(open(stored_path)), args.bandwidth, args.latency)
     print("\n".join(lines))
     if tag == "large_column":
