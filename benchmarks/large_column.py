@@ -142,9 +142,9 @@ def span(work, source, ranks, end_time, env):
     first = int(re.search(r"Resumed run \S+ from .* \(step (\d+)\)", text).group(1))
     steps = int(fin.group(1)) - first
     ect = timer_seconds(text, "ECT sensor")
+    ect = 0.0 if math.isnan(ect) else ect
     wall = float(fin.group(3))
-    figures = {"ranks": ranks, "steps": steps, "wall": wall, "ect": 0.0 if ect != ect else ect,
-               "per_step": (wall - (0.0 if ect != ect else ect)) / steps,
+    figures = {"ranks": ranks, "steps": steps, "wall": wall, "ect": ect, "per_step": (wall - ect) / steps,
                "fgmres_per_step": sum(m["krylov_iterations"][-steps:]) / steps,
                "memory": cost_lines(text)[-1], "partition": partition(text)}
     if ranks > 1:
