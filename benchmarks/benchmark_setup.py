@@ -4,6 +4,7 @@ the summary of a run from its monitors.csv and screen log."""
 import csv
 import os
 import re
+import shutil
 import sys
 
 
@@ -40,6 +41,44 @@ subsection output
 end
 """)
     return prm, folder, os.path.join(work, name + ".log")
+
+
+FIELD_OUTPUT = re.compile(r"^fields([._]|$)")  # the field outputs: not needed to continue a run
+
+
+def archive_run(folder, sidecars, target):
+    """Packs what continuing a run needs into the tar.gz TARGET: FOLDER without its field
+    outputs (checkpoint, monitors and the other CSV files) and the SIDECARS beside it (its
+    .log and .wall), so that a run survives the loss of build/ and continues on another
+    machine (restore_run). Written beside TARGET and renamed: an interrupted archive
+    leaves the previous one whole. Returns TARGET's size in bytes."""
+    import tarfile
+    partial = target + ".partial"
+    with tarfile.open(partial, "w:gz") as archive:
+        name = os.path.basename(folder)
+        for entry in sorted(os.listdir(folder)):
+            if not FIELD_OUTPUT.match(entry) and entry not in (".wetbed.lock", "checkpoint.partial",
+                                                                       "checkpoint.previous"):
+                archive.add(os.path.join(folder, entry), arcname=os.path.join(name, entry))
+        for path in sidecars:
+            if os.path.exists(path):
+                archive.add(path, arcname=os.path.basename(path))
+    os.replace(partial, target)
+    return os.path.getsize(target)
+
+
+def restore_run(target, folder):
+    """Unpacks the archive TARGET (archive_run) beside FOLDER when FOLDER has no checkpoint
+    of its own (a fresh build/): the run then continues from the archived checkpoint.
+    Returns whether it did."""
+    import tarfile
+    if not os.path.exists(target) or os.path.isdir(os.path.join(folder, "checkpoint")):
+        return False
+    if os.path.isdir(folder):
+        shutil.rmtree(folder)  # a piece started from rest without a checkpoint: the archive is further
+    with tarfile.open(target, "r:gz") as archive:
+        archive.extractall(os.path.dirname(folder))
+    return True
 
 
 def last_time(folder):

@@ -27,7 +27,10 @@ of the issue (AMR against uniform on two of these runs) measures what the refine
 changes.
 
 Runs are resumable (checkpoints every 10 min of wall time): call again to continue; a
-run stopped with SIGUSR2 is continued. Each run's monitors.csv (gzipped), bubble summary
+run stopped with SIGUSR2 is continued. Each piece that ends with a checkpoint (finished,
+or stopped with SIGUSR2) also packs it, with the run's CSV files, log and wall time, into
+benchmarks/results/seed_column_study/NAME/continue.tar.gz: a fresh clone, whose build/
+has no run, continues from there. Each run's monitors.csv (gzipped), bubble summary
 and events, and ECT slab signal are kept in benchmarks/results/seed_column_study/NAME/
 with its summary.json; --table rewrites the table of doc/seed_column_study.md and the
 picture doc/images/seed_column_fi.png without running (the runs whose folders are in
@@ -49,8 +52,8 @@ import os
 import shutil
 import sys
 
-from benchmark_setup import (dominant_frequency, read_case, replace_doc_section, repository_root,
-                             run_resumable)
+from benchmark_setup import (archive_run, dominant_frequency, read_case, replace_doc_section,
+                             repository_root, restore_run, run_resumable)
 
 root = repository_root()
 sys.path.insert(0, os.path.join(root, "scripts"))
@@ -128,6 +131,10 @@ def store(folder, name, summary):
     for file in ("bubble_summary.csv", "bubble_events.csv", "ect.csv"):
         if os.path.exists(os.path.join(folder, file)):
             shutil.copy(os.path.join(folder, file), kept)
+    if os.path.exists(os.path.join(folder, "ect_images.csv")):  # the frames of the ECT stacks
+        with open(os.path.join(folder, "ect_images.csv"), "rb") as f, \
+                gzip.open(os.path.join(kept, "ect_images.csv.gz"), "wb") as g:
+            shutil.copyfileobj(f, g)
     json.dump(summary, open(os.path.join(kept, "summary.json"), "w"), indent=1)
 
 
@@ -221,6 +228,7 @@ def picture(stored, levels):
     return ["", f"![FI and frequency against the loading](images/{name})"]
 
 
+ARCHIVE = "continue.tar.gz"  # what continuing a run needs: its checkpoint, CSV files, log and wall time
 PICTURED = ("dry", "0.055", "0.138")  # the seed's three regimes
 
 
@@ -283,13 +291,19 @@ def main():
         folder, prm = os.path.join(work, name), os.path.join(work, name + ".prm")
         open(prm, "w").write(case_text(loading, args.levels, args.end_time, args.window, folder))
         command = ["mpirun", "-np", "2", os.path.join(root, "build", "wetbed"), prm]
-        code, wall = run_resumable(command, folder, os.path.join(work, name + ".log"),
-                                   os.path.join(work, name + ".wall"), True, env, args.end_time)
+        sidecars = [os.path.join(work, name + ".log"), os.path.join(work, name + ".wall")]
+        archive = os.path.join(root, "benchmarks", "results", "seed_column_study", name, ARCHIVE)
+        if restore_run(archive, folder):
+            print(f"{name}: continues from {os.path.relpath(archive, root)}", flush=True)
+        code, wall = run_resumable(command, folder, *sidecars, True, env, args.end_time)
         if not os.path.exists(os.path.join(folder, "monitors.csv")):
             print(f"{name}: exit {code}, no monitors.csv (see {name}.log)", flush=True)
             continue
         summary = summarize(folder, args.end_time, args.window, wall, code)
         store(folder, name, summary)
+        if code in (0, 4) and os.path.isdir(os.path.join(folder, "checkpoint")):
+            size = archive_run(folder, sidecars, archive)
+            print(f"{name}: checkpoint kept in {os.path.relpath(archive, root)} ({size / 1e6:.1f} MB)", flush=True)
         print(f"{name}: exit {code}, t = {summary['reached']:.3f} s, wall {wall:.0f} s, {summary['regime']}",
               flush=True)
         if code == 4:  # stopped with a checkpoint (SIGUSR2): the later runs wait for the next call
