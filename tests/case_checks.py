@@ -3,7 +3,7 @@
 
 usage: case_checks.py CHECK WETBED SOURCE_DIR WORK_DIR
 CHECK: ergun | split_inlet | wall_groups | hydrostatic | packed | settling | ramp | kinetic | ranks |
-       monitor_interval | signals | disk_full | bubbling | hdf5 | restart | amr | failure | bubbles |
+       monitor_interval | signals | disk_full | bubbling | hdf5 | restart | amr | amr_ranks | failure | bubbles |
        matrix_free | divergence | column_3d | seed_column | statistics | profiles
 """
 import csv
@@ -760,10 +760,12 @@ elif check == "matrix_free":
                "subsection spectrum\n set enabled = false\nend\n")
     run("column_3d", steps3d + multigrid, 2, os.path.join(work, "matrix_free_3d"))
     checked("3D column")
-elif check == "amr":
+elif check in ("amr", "amr_ranks"):
     # bubble-following AMR adapting at every step (refining and coarsening) on the 2D
-    # bubbling bed: solids mass to 1e-12 and bounds at every step; T13: 2 ranks equal 1
-    # rank with AMR on; T14 with AMR: continued on 2 ranks from a 1-rank checkpoint
+    # bubbling bed: solids mass to 1e-12 and bounds at every step, and a fixed-mesh run
+    # continued with AMR (check amr, 1 rank); T13: 2 ranks equal 1 rank with AMR on; T14
+    # with AMR: continued on 2 ranks from a 1-rank checkpoint (check amr_ranks, on the
+    # 1-rank run that check amr leaves in WORK/amr_1: ctest runs it after amr)
     import shutil
     # solved to 1e-11 so that the ranks' round-off differences (~1e-7 at the default
     # 1e-8) cannot flip a refinement decision at a threshold; heavy coarsening (threshold
@@ -774,44 +776,53 @@ elif check == "amr":
                  "subsection adaptive refinement\n set enabled = true\n set interval = 1\n"
                  " set minimum level = 0\n set maximum level = 3\n set coarsen threshold = 0.06\nend\n"
                  "subsection checkpoint\n set interval = 20\n set at end = false\nend\n")
-    one = run("bubbling_bed_2d", overrides, 1, os.path.join(work, "amr_1"))
-    bounds_and_mass(one, 0.61, 1e-12)
-    cells = [int(r["active_cells"]) for r in one]
-    grew, shrank = sum(b > a for a, b in zip(cells, cells[1:])), sum(b < a for a, b in zip(cells, cells[1:]))
-    expect(grew >= 10 and shrank >= 2, f"the mesh followed the bed: {cells[0]} -> {cells[-1]} cells, "
-                                       f"{grew} adaptations with more cells, {shrank} with fewer")
-    expect(max(cells) < 600 * 4 ** 2, f"AMR keeps fewer cells ({max(cells)}) than the uniform level-3 mesh (9600)")
-    # 2 ranks partitioned by cost (a wall face costs 3 cells): another partition, the
-    # same mesh and monitors
-    weighted = overrides + "subsection mesh\n set wall face weight = 3\nend\n"
-    two = run("bubbling_bed_2d", weighted, 2, os.path.join(work, "amr_2"))
-    partition = re.findall(r"Partition: owned cells per rank (\d+)-(\d+), wall faces per rank (\d+)-(\d+) "
-                           r"\(mesh/wall face weight 3\)", run.stdout)
-    expect(partition and partition[0][0] != partition[0][1],
-           f"the cells are balanced by cost, not by count (cells and wall faces per rank: {partition[:1]})")
-    expect([int(r["active_cells"]) for r in two] == cells, "2 ranks adapt the mesh exactly as 1 rank")
-    same_monitors(one, two, "AMR on 2 ranks vs 1 rank", 1e-4)
-    folder = os.path.join(work, "amr_resumed")
-    shutil.rmtree(folder, ignore_errors=True)
-    shutil.copytree(os.path.join(work, "amr_1"), folder)
-    rows = run("bubbling_bed_2d", weighted, 2, folder, resume=True)  # repartitioned by cost when it adapts
-    same_monitors(one, rows, "AMR run resumed at step 20 on 2 ranks", 1e-4)
-    # a run spun up on the fixed base mesh to 0.015 s goes on with AMR from its final
-    # checkpoint: the mesh adapts after the resume, the solids mass and bounds hold
-    fixed = (overrides.replace(" set enabled = true\n", " set enabled = false\n")
-             .replace("set end time = 0.03", "set end time = 0.015").replace("set at end = false", "set at end = true"))
-    base = run("bubbling_bed_2d", fixed, 1, os.path.join(work, "amr_spun_up"))
-    folder = os.path.join(work, "amr_after_fixed")
-    shutil.rmtree(folder, ignore_errors=True)
-    shutil.copytree(os.path.join(work, "amr_spun_up"), folder)
-    rows = run("bubbling_bed_2d", overrides, 1, folder, resume=True)
-    last = int(base[-1]["step"])
-    before = {int(r["active_cells"]) for r in rows if int(r["step"]) <= last}
-    after = [int(r["active_cells"]) for r in rows if int(r["step"]) > last]
-    expect(before == {int(base[0]["active_cells"])} and after and any(c not in before for c in after),
-           f"the fixed mesh ({before} cells to step {last}) adapts after the resume: {after[:3]} ... {after[-1:]}")
-    bounds_and_mass(rows, 0.61, 1e-12)
-    expect(abs(float(rows[-1]["time"]) - 0.03) < 1e-9, f"the resumed run reaches 0.03 s (t = {rows[-1]['time']})")
+    if check == "amr":
+        one = run("bubbling_bed_2d", overrides, 1, os.path.join(work, "amr_1"))
+        bounds_and_mass(one, 0.61, 1e-12)
+        cells = [int(r["active_cells"]) for r in one]
+        grew, shrank = sum(b > a for a, b in zip(cells, cells[1:])), sum(b < a for a, b in zip(cells, cells[1:]))
+        expect(grew >= 10 and shrank >= 2, f"the mesh followed the bed: {cells[0]} -> {cells[-1]} cells, "
+                                           f"{grew} adaptations with more cells, {shrank} with fewer")
+        expect(max(cells) < 600 * 4 ** 2, f"AMR keeps fewer cells ({max(cells)}) than the uniform level-3 mesh (9600)")
+        # a run spun up on the fixed base mesh to 0.015 s goes on with AMR from its final
+        # checkpoint: the mesh adapts after the resume, the solids mass and bounds hold
+        fixed = (overrides.replace(" set enabled = true\n", " set enabled = false\n")
+                 .replace("set end time = 0.03", "set end time = 0.015").replace("set at end = false", "set at end = true"))
+        base = run("bubbling_bed_2d", fixed, 1, os.path.join(work, "amr_spun_up"))
+        folder = os.path.join(work, "amr_after_fixed")
+        shutil.rmtree(folder, ignore_errors=True)
+        shutil.copytree(os.path.join(work, "amr_spun_up"), folder)
+        rows = run("bubbling_bed_2d", overrides, 1, folder, resume=True)
+        last = int(base[-1]["step"])
+        before = {int(r["active_cells"]) for r in rows if int(r["step"]) <= last}
+        after = [int(r["active_cells"]) for r in rows if int(r["step"]) > last]
+        expect(before == {int(base[0]["active_cells"])} and after and any(c not in before for c in after),
+               f"the fixed mesh ({before} cells to step {last}) adapts after the resume: {after[:3]} ... {after[-1:]}")
+        bounds_and_mass(rows, 0.61, 1e-12)
+        expect(abs(float(rows[-1]["time"]) - 0.03) < 1e-9, f"the resumed run reaches 0.03 s (t = {rows[-1]['time']})")
+    else:
+        if not os.path.isfile(os.path.join(work, "amr_1", "monitors.csv")):
+            expect(False, "check amr's 1-rank run is missing (ctest runs case_amr before case_amr_ranks)")
+            sys.exit(1)
+        one = read_monitors(os.path.join(work, "amr_1"))
+        cells = [int(r["active_cells"]) for r in one]
+        expect(abs(float(one[-1]["time"]) - 0.03) < 1e-9,
+               "the 1-rank AMR run of check amr reached 0.03 s")
+        # 2 ranks partitioned by cost (a wall face costs 3 cells): another partition, the
+        # same mesh and monitors
+        weighted = overrides + "subsection mesh\n set wall face weight = 3\nend\n"
+        two = run("bubbling_bed_2d", weighted, 2, os.path.join(work, "amr_2"))
+        partition = re.findall(r"Partition: owned cells per rank (\d+)-(\d+), wall faces per rank (\d+)-(\d+) "
+                               r"\(mesh/wall face weight 3\)", run.stdout)
+        expect(partition and partition[0][0] != partition[0][1],
+               f"the cells are balanced by cost, not by count (cells and wall faces per rank: {partition[:1]})")
+        expect([int(r["active_cells"]) for r in two] == cells, "2 ranks adapt the mesh exactly as 1 rank")
+        same_monitors(one, two, "AMR on 2 ranks vs 1 rank", 1e-4)
+        folder = os.path.join(work, "amr_resumed")
+        shutil.rmtree(folder, ignore_errors=True)
+        shutil.copytree(os.path.join(work, "amr_1"), folder)
+        rows = run("bubbling_bed_2d", weighted, 2, folder, resume=True)  # repartitioned by cost when it adapts
+        same_monitors(one, rows, "AMR run resumed at step 20 on 2 ranks", 1e-4)
 elif check == "failure":
     # issue 7: a step that cannot be saved by halving dt stops the run cleanly: status 3,
     # a report naming the cause and where the failed state is extreme, the last good
