@@ -35,10 +35,12 @@ and events, and ECT slab signal are kept in benchmarks/results/seed_column_study
 with its summary.json; --table rewrites the table of doc/seed_column_study.md and the
 picture doc/images/seed_column_fi.png without running (the runs whose folders are in
 build/ summarized afresh, the others from what is stored).
---pictures also draws, from the runs' fields in build/, the vertical slices of alpha_s
-at four times of the window and the alpha_g = 0.8 iso-surface at the end
-(scripts/render_fields.py) of the dry run and of the loadings 0.055 and 0.138, and the
-ECT frames stacked in time, dry beside them (scripts/ect_stack.py), into doc/images/.
+A run that reaches its end time draws, from its field output in build/, the vertical
+slices of alpha_s at four times of the window and the alpha_g = 0.8 iso-surface at the
+end (scripts/render_fields.py) into its stored folder (the field output itself is not
+kept). --pictures puts those of the dry run and of the loadings 0.055 and 0.138 into
+doc/images/ (drawn afresh where build/ has the fields), with their ECT frames stacked in
+time, dry beside them (scripts/ect_stack.py, from the stored ect_images.csv.gz).
 
 usage: python3 benchmarks/seed_column_study.py [--end-time 3] [--window 2] [--levels 0]
            [--only dry 0.055 ...] [--table] [--pictures]
@@ -232,8 +234,37 @@ ARCHIVE = "continue.tar.gz"  # what continuing a run needs: its checkpoint, CSV 
 PICTURED = ("dry", "0.055", "0.138")  # the seed's three regimes
 
 
+def render(name, work, window):
+    """Draws a run's alpha_s slices at four times of its last WINDOW s and its alpha_g = 0.8
+    iso-surface at the end (scripts/render_fields.py) from its field output in WORK, into
+    its stored folder (the pictures outlive build/, whose field output is not kept).
+    Returns whether the fields were there."""
+    import subprocess
+    folder = os.path.join(work, name)
+    if not os.path.exists(os.path.join(folder, "monitors.csv")) or not os.path.exists(os.path.join(folder, "fields.pvd")):
+        return False
+    python = "/usr/bin/python3" if os.path.exists("/usr/bin/python3") else sys.executable
+    m = wetbed_results.monitors(folder)
+    end = m["time"][-1]
+    start = max(end - window, 0.0)
+    top = max(0.3, 0.05 + max(h for t, h in zip(m["time"], m["bed_surface_height"]) if t >= start))
+    times = ",".join(f"{start + k * (end - start) / 3:.3f}" for k in range(4))
+    out = os.path.join(work, "pictures", name)
+    subprocess.run([python, os.path.join(root, "scripts", "render_fields.py"), folder, "--times", times,
+                    "--no-animation", "--height", f"0,{min(top, 1.0):.2f}", "--size", "300x700", "--out", out],
+                   check=True, stdout=subprocess.DEVNULL)
+    kept = os.path.join(root, "benchmarks", "results", "seed_column_study", name)
+    os.makedirs(kept, exist_ok=True)
+    for picture in ("alpha_s_snapshots.png", "alpha_g_iso.png"):
+        if os.path.exists(os.path.join(out, picture)):
+            shutil.copy(os.path.join(out, picture), kept)
+    return True
+
+
 def pictures(levels, work, window):
-    """Slices, iso-surfaces and the ECT stack of the pictured runs that have fields."""
+    """The slices and iso-surfaces of the pictured runs (drawn afresh where build/ has
+    their fields, else as stored by render()), and their ECT frames stacked in time from
+    the stored ect_images.csv.gz."""
     import subprocess
     python = "/usr/bin/python3" if os.path.exists("/usr/bin/python3") else sys.executable
     images = os.path.join(root, "doc", "images")
@@ -241,31 +272,23 @@ def pictures(levels, work, window):
     lines, stacked, labels = [], [], []
     for loading in PICTURED:
         name = run_name(loading, levels)
-        folder = os.path.join(work, name)
-        if not os.path.exists(os.path.join(folder, "monitors.csv")):
-            continue
-        m = wetbed_results.monitors(folder)
-        end = m["time"][-1]
-        start = max(end - window, 0.0)
-        top = max(0.3, 0.05 + max(h for t, h in zip(m["time"], m["bed_surface_height"]) if t >= start))
-        times = ",".join(f"{start + k * (end - start) / 3:.3f}" for k in range(4))
-        out = os.path.join(work, "pictures", name)
-        subprocess.run([python, os.path.join(root, "scripts", "render_fields.py"), folder, "--times", times,
-                        "--no-animation", "--height", f"0,{min(top, 1.0):.2f}", "--size", "300x700", "--out", out],
-                       check=True, stdout=subprocess.DEVNULL)
+        render(name, work, window)
+        kept = os.path.join(root, "benchmarks", "results", "seed_column_study", name)
         label = "dry" if loading == "dry" else f"δ = {loading}·10⁻²"
         for source, kind in (("alpha_s_snapshots.png", "slices"), ("alpha_g_iso.png", "iso")):
-            if os.path.exists(os.path.join(out, source)):
+            if os.path.exists(os.path.join(kept, source)):
                 target = f"seed_column_{name.replace('.', '_')}_{kind}.png"  # name: uniform_... or amrL_...
-                shutil.copy(os.path.join(out, source), os.path.join(images, target))
+                shutil.copy(os.path.join(kept, source), os.path.join(images, target))
                 what = "α_s on the vertical slice through the axis" if kind == "slices" else "the α_g = 0.8 iso-surface"
                 lines.append(f"![{label}: {what}](images/{target})")
-        stacked.append(folder)
-        labels.append(label)
+        if os.path.exists(os.path.join(kept, "ect_images.csv.gz")) and os.path.exists(os.path.join(kept, "ect.csv")):
+            stacked.append(kept)
+            labels.append(label)
     if len(stacked) > 1:
         target = f"seed_column_ect{tag}.png"
+        ends = [json.load(open(os.path.join(k, "summary.json")))["reached"] for k in stacked]
         subprocess.run([python, os.path.join(root, "scripts", "ect_stack.py"), *stacked, "--labels", ",".join(labels),
-                        "--start", f"{max(0.0, min(wetbed_results.monitors(f)['time'][-1] for f in stacked) - window):.3f}",
+                        "--start", f"{max(0.0, min(ends) - window):.3f}",
                         "--out", os.path.join(images, target)], check=True, stdout=subprocess.DEVNULL)
         lines.append(f"![ECT frames stacked in time, dry beside wet](images/{target})")
     return lines
@@ -301,6 +324,8 @@ def main():
             continue
         summary = summarize(folder, args.end_time, args.window, wall, code)
         store(folder, name, summary)
+        if code == 0 and summary["reached"] >= args.end_time - 1e-9:  # its pictures, while its fields are here
+            render(name, work, args.window)
         if code in (0, 4) and os.path.isdir(os.path.join(folder, "checkpoint")):
             size = archive_run(folder, sidecars, archive)
             print(f"{name}: checkpoint kept in {os.path.relpath(archive, root)} ({size / 1e6:.1f} MB)", flush=True)

@@ -124,7 +124,7 @@ def ect(folder, start=-math.inf, end=math.inf):
     """The ECT sensor's output between the times start and end (both included):
     {"signal": ect.csv's columns (time, alpha_s_slab), "times": the image times,
     "images": one n x n nested list per image, images[k][j][i] = pixel_i_j (NaN outside
-    the column), "resolution": n, "spectrum": spectrum(folder, "ect_spectrum.csv")}.
+    the column; from ect_images.csv, or its gzipped copy ect_images.csv.gz), "resolution": n, "spectrum": spectrum(folder, "ect_spectrum.csv")}.
     "signal" and "images" are None without their file; None without both. Raises
     ValueError if an image's pixels are not a square."""
     signal = read_csv(os.path.join(folder, "ect.csv"))
@@ -132,9 +132,12 @@ def ect(folder, start=-math.inf, end=math.inf):
         keep = [k for k, t in enumerate(signal.get("time", [])) if start <= t <= end]
         signal = {name: [values[k] for k in keep] for name, values in signal.items()}
     path = os.path.join(folder, "ect_images.csv")
+    if not os.path.exists(path) and os.path.exists(path + ".gz"):  # a stored copy
+        path += ".gz"
     times, images, n = [], None, None
     if os.path.exists(path):
-        with open(path, newline="") as f:
+        import gzip
+        with (gzip.open(path, "rt", newline="") if path.endswith(".gz") else open(path, newline="")) as f:
             reader = csv.reader(f)
             header = next(reader, ["time"])
             pixels = len(header) - 1

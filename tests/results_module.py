@@ -120,6 +120,16 @@ def tables():
     e = wr.ect(run, start=0.001, end=0.002)
     expect(same(e["times"], [0.001, 0.002]) and same(e["signal"]["alpha_s_slab"], [0.57998783, 0.5801])
            and len(e["images"]) == 2, "ect: start and end select the frames and the signal (both ends included)")
+    stored = os.path.join(work, "stored_images")  # a stored copy: ect_images.csv.gz
+    shutil.rmtree(stored, ignore_errors=True)
+    write(stored, "ect.csv", "time,alpha_s_slab\n0,0.58\n")
+    import gzip
+    with open(os.path.join(run, "ect_images.csv"), "rb") as f, gzip.open(os.path.join(stored, "ect_images.csv.gz"), "wb") as g:
+        g.write(f.read())
+    g = wr.ect(stored)
+    expect(g["resolution"] == 2 and same(g["times"], [0.0, 0.001, 0.002]) and
+           same(g["images"], [[[nan, 0.5], [0.25, 0.125]], [[0.1, 0.2], [0.3, nan]], [[1.0, 2.0], [3.0, 4.0]]]),
+           "ect: the images read from a gzipped ect_images.csv.gz")
     odd = os.path.join(work, "odd_images")
     shutil.rmtree(odd, ignore_errors=True)
     write(odd, "ect_images.csv", "time,pixel_0_0,pixel_1_0,pixel_0_1\n0,1,2,3\n")
