@@ -42,8 +42,15 @@ kept). --pictures puts those of the dry run and of the loadings 0.055 and 0.138 
 doc/images/ (drawn afresh where build/ has the fields), with their ECT frames stacked in
 time, dry beside them (scripts/ect_stack.py, from the stored ect_images.csv.gz).
 
+--fork L1 [L2 ...] (item 6): continues each finished uniform run of --only (default dry)
+from its checkpoint at --end-time to --fork-end (5 s), on its base mesh (the reference)
+and with each number of AMR levels, each in its own folder fork3_<run> (its wall time
+counted from the fork, its statistics over its last --window s), and writes the table
+"AMR against the uniform mesh" of doc/seed_column_study.md, with the uniform run's last
+window before the fork as the yardstick of what two windows of one run differ.
+
 usage: python3 benchmarks/seed_column_study.py [--end-time 3] [--window 2] [--levels 0]
-           [--only dry 0.055 ...] [--table] [--pictures]
+           [--only dry 0.055 ...] [--table] [--pictures] [--fork 1 2 [--fork-end 5]]
 (build first: bash scripts/build.sh; 2 cores: stop other runs first)
 """
 import argparse
@@ -54,7 +61,7 @@ import os
 import shutil
 import sys
 
-from benchmark_setup import (archive_run, dominant_frequency, read_case, replace_doc_section,
+from benchmark_setup import (FIELD_OUTPUT, archive_run, dominant_frequency, read_case, replace_doc_section,
                              repository_root, restore_run, run_resumable)
 
 root = repository_root()
@@ -73,14 +80,17 @@ def run_name(loading, levels):
     return ("uniform" if levels == 0 else f"amr{levels}") + "_" + ("dry" if loading == "dry" else "wet_" + loading)
 
 
-def case_text(loading, levels, end_time, window, folder):
+def case_text(loading, levels, end_time, window, folder, statistics_start=None):
+    """The case of one run; STATISTICS_START (default end_time - window) is the time
+    averages' start, which a resumed run keeps from the run it continues."""
+    statistics_start = end_time - window if statistics_start is None else statistics_start
     delta = 0.0 if loading == "dry" else float(loading) * 1e-2
     amr = (f"subsection adaptive refinement\n set enabled = true\n set maximum level = {levels}\nend\n"
            if levels > 0 else "subsection adaptive refinement\n set enabled = false\nend\n")
     return (read_case("seed000_small_column") + "\n" + amr +
             f"subsection wet particles\n set liquid loading = {delta:.6g}\nend\n"
             f"subsection time stepping\n set end time = {end_time}\nend\n"
-            f"subsection statistics\n set time averages = true\n set start time = {end_time - window}\n"
+            f"subsection statistics\n set time averages = true\n set start time = {statistics_start:g}\n"
             " set radial profile heights = 0.025, 0.076\nend\n"
             "subsection checkpoint\n set wall time interval = 600\nend\n"
             f"subsection output\n set folder = {folder}\n set field interval = 0.05\n"
@@ -294,6 +304,89 @@ def pictures(levels, work, window):
     return lines
 
 
+def fork_name(loading, levels, fork_time):
+    """The run that continues uniform_<loading> from its end FORK_TIME with LEVELS levels
+    of AMR (0: on the base mesh, the reference)."""
+    return f"fork{fork_time:g}_" + run_name(loading, levels)
+
+
+def fork(loading, levels, args, work, env):
+    """Item 6: continues the finished uniform run of LOADING (its checkpoint at
+    args.end_time, from build/ or its stored continue.tar.gz) to args.fork_end with
+    LEVELS levels of adaptive refinement (0: on the base mesh, the reference the AMR run
+    is compared with), in a copy of its folder; the statistics over the last
+    args.window s, the wall time counted from the fork. Returns the stored summary or
+    None."""
+    source = run_name(loading, 0)
+    results = os.path.join(root, "benchmarks", "results", "seed_column_study")
+    source_folder = os.path.join(work, source)
+    if restore_run(os.path.join(results, source, ARCHIVE), source_folder):
+        print(f"{source}: restored from its stored checkpoint", flush=True)
+    name = fork_name(loading, levels, args.end_time)
+    folder, prm = os.path.join(work, name), os.path.join(work, name + ".prm")
+    sidecars = [os.path.join(work, name + ".log"), os.path.join(work, name + ".wall")]
+    archive = os.path.join(results, name, ARCHIVE)
+    restore_run(archive, folder)
+    if not os.path.isdir(os.path.join(folder, "checkpoint")):
+        if not os.path.isdir(os.path.join(source_folder, "checkpoint")) or \
+                wetbed_results.monitors(source_folder)["time"][-1] < args.end_time - 1e-9:
+            print(f"{name}: {source} has not reached {args.end_time:g} s with a checkpoint; run it first", flush=True)
+            return None
+        if os.path.isdir(folder):
+            shutil.rmtree(folder)
+        shutil.copytree(source_folder, folder, ignore=lambda d, names: [
+            n for n in names if FIELD_OUTPUT.match(n) or n in (".wetbed.lock", "checkpoint.previous", "checkpoint.partial")])
+        with open(sidecars[1], "w") as f:  # the fork's own wall time: run_resumable continues the checkpoint
+            f.write("0")
+    open(prm, "w").write(case_text(loading, levels, args.fork_end, args.window, folder,
+                                   statistics_start=args.end_time - args.window))
+    command = ["mpirun", "-np", "2", os.path.join(root, "build", "wetbed"), prm]
+    code, wall = run_resumable(command, folder, *sidecars, True, env, args.fork_end)
+    summary = summarize(folder, args.fork_end, args.window, wall, code)
+    summary["fork"] = args.end_time
+    store(folder, name, summary)
+    if code in (0, 4) and os.path.isdir(os.path.join(folder, "checkpoint")):
+        archive_run(folder, sidecars, archive)
+    print(f"{name}: exit {code}, t = {summary['reached']:.3f} s, wall {wall:.0f} s, {summary['regime']}", flush=True)
+    return summary if code in (0, 4) else None
+
+
+def fork_table(loadings, levels, fork_time, fork_end, window):
+    """The AMR forks against the uniform mesh continued over the same span, and the
+    uniform run's previous window as the yardstick of what a window's statistics vary."""
+    results = os.path.join(root, "benchmarks", "results", "seed_column_study")
+    lines = [f"Command: `python3 benchmarks/seed_column_study.py --end-time {fork_time:g} --fork "
+             f"{' '.join(map(str, levels))} --fork-end {fork_end:g} --only {' '.join(loadings)}` (each uniform run's "
+             f"checkpoint at {fork_time:g} s continued to {fork_end:g} s on 2 ranks, on its base mesh and with each "
+             f"number of AMR levels; statistics over each run's last {window:g} s). The uniform run's own last "
+             f"{window:g} s before the fork are the yardstick of how much two windows of one run differ.", "",
+             "| δ (10⁻²) | mesh | window | cells | FI probe (inlet) | f at 7.6 cm (Hz) | bubbles | mean d_b (cm) | "
+             "splits, coalescences per s | expansion | regime | wall s per simulated s | cost against uniform |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    for loading in loadings:
+        rows = []
+        path = os.path.join(results, run_name(loading, 0), "summary.json")
+        if os.path.exists(path):
+            rows.append(("base mesh", json.load(open(path)), None))
+        for level in [0] + list(levels):
+            path = os.path.join(results, fork_name(loading, level, fork_time), "summary.json")
+            if os.path.exists(path):
+                rows.append(("base mesh" if level == 0 else f"AMR, {level} level(s)", json.load(open(path)), fork_time))
+        reference = next((s for mesh, s, f in rows if f is not None and mesh == "base mesh"), None)
+        for mesh, s, start in rows:
+            span = s["reached"] - (start or 0.0)
+            cost = s["wall"] / max(span, 1e-9)
+            ratio = ""
+            if start is not None and reference is not None:
+                ratio = f"{cost / (reference['wall'] / max(reference['reached'] - start, 1e-9)):.2f}×"
+            lines.append(
+                f"| {loading} | {mesh} | {s['start']:.2f}–{s['reached']:.2f} s | {int(s['cells'][0])}–{int(s['cells'][1])} | "
+                f"{s['fi_probe']:.2f} ({s['fi_inlet']:.2f}) | {s['frequency']:.2f} | {s['bubble_count']:.2f} | "
+                f"{100 * s['bubble_diameter']:.2f} | {s['splittings']:.2f}, {s['coalescences']:.2f} | "
+                f"{s['expansion']:.2f} | {s['regime']} | {cost:.0f} | {ratio} |")
+    return lines
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--end-time", type=float, default=3.0)
@@ -302,13 +395,38 @@ def main():
     parser.add_argument("--only", nargs="*", help="loadings to run, in this order (dry, 0.027, ...)")
     parser.add_argument("--table", action="store_true", help="rewrite the table only")
     parser.add_argument("--pictures", action="store_true", help="also draw slices, iso-surfaces and ECT stacks")
+    parser.add_argument("--fork", type=int, nargs="+", metavar="LEVELS",
+                        help="continue the finished uniform runs (--only, default dry) from --end-time to "
+                             "--fork-end with each number of AMR levels, and on the base mesh")
+    parser.add_argument("--fork-end", type=float, default=5.0)
     args = parser.parse_args()
     unknown = [o for o in (args.only or []) if o not in LOADINGS]
     if unknown:
         sys.exit(f"--only: unknown loading(s) {unknown}; choose from {LOADINGS}")
+    if args.fork is not None and (min(args.fork) < 1 or args.fork_end <= args.end_time + args.window / 2):
+        sys.exit("--fork: levels >= 1, and --fork-end beyond --end-time by at least half the --window")
     work = os.path.join(root, "build", "benchmarks", "seed_column_study")
     os.makedirs(work, exist_ok=True)
     env = dict(os.environ, OMPI_MCA_rmaps_base_oversubscribe="1")
+    if args.fork is not None:
+        loadings = args.only or ["dry"]
+        stopped = False
+        for loading in ([] if args.table else loadings):
+            for level in [0] + args.fork:  # the reference first: it is the cheaper
+                summary = fork(loading, level, args, work, env)
+                if summary is None:  # no uniform run to fork, or a failed run: the next loading
+                    break
+                if summary["reached"] < args.fork_end - 1e-9:  # SIGUSR2: the rest waits for the next call
+                    print("stopped with a checkpoint; run the same command again to continue", flush=True)
+                    stopped = True
+                    break
+            if stopped:
+                break
+        lines = fork_table(loadings, args.fork, args.end_time, args.fork_end, args.window)
+        replace_doc_section(root, "seed_column_amr", "AMR against the uniform mesh", lines,
+                            doc_name="seed_column_study.md")
+        print("\n".join(lines))
+        return
     for loading in ([] if args.table else args.only or LOADINGS):  # in the order given
         name = run_name(loading, args.levels)
         folder, prm = os.path.join(work, name), os.path.join(work, name + ".prm")
