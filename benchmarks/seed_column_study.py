@@ -10,7 +10,10 @@ delta = 0.027, 0.055, 0.08, 0.10, 0.12, 0.138 (x 1e-2), each on 2 ranks to --end
     spectrum of alpha_s_slab, 100 frames/s, over the window);
   - the bubble count and mean equivalent diameter, splittings and coalescences per s;
   - the bed expansion (the mean bed-surface height over the 5 cm static bed);
-  - a regime label: no bubble in the window (mean count < 0.2) is "de-fluidized" when
+  - a regime label: a bed whose surface climbs by more than its static height (5 cm)
+    over the window without ever dropping 2 cm below its running maximum is
+    "de-fluidized (lifted plug)" (the void under it is no bubble passing through);
+    otherwise no bubble in the window (mean count < 0.2) is "de-fluidized" when
     the probe FI exceeds 1.3 (the bed is lifted whole: a plug) or "channelling" when it
     is below 0.7 (the gas passes without carrying the bed's weight), else "homogeneous";
     with bubbles, "slugging" when their mean equivalent diameter is at least 0.6 of the
@@ -74,6 +77,7 @@ STATIC_BED = 0.05      # m, the case's static bed height
 DIAMETER = 0.05        # m, the column's diameter
 NO_BUBBLES = 0.2       # mean bubble count below which a window has no bubbles
 SLUG_DIAMETER = 0.6    # mean bubble diameter / column diameter from which it slugs
+PLUG_FALLBACK = 0.02   # m: the most a lifted plug's surface drops below its running maximum
 
 
 def run_name(loading, levels):
@@ -97,7 +101,24 @@ def case_text(loading, levels, end_time, window, folder, statistics_start=None):
             " set progress interval = 100\nend\n")
 
 
+def surface_motion(time, height, start):
+    """(rise, fallback) of the bed surface over the window after START: how far its
+    height at the end lies above that at the start, and the largest drop below its
+    running maximum."""
+    window = [(t, h) for t, h in zip(time, height) if t >= start]
+    peak, fallback = -math.inf, 0.0
+    for _, h in window:
+        peak = max(peak, h)
+        fallback = max(fallback, peak - h)
+    return window[-1][1] - window[0][1], fallback
+
+
 def regime(s):
+    if s.get("surface_rise", 0.0) > STATIC_BED and s.get("surface_fallback", math.inf) < PLUG_FALLBACK:
+        # the bed climbs whole, more than its own height, and never falls back: the void
+        # under it (which the bubble analysis counts as one large bubble) is no bubble
+        # that passes through the bed
+        return "de-fluidized (lifted plug)"
     if not s["bubble_count"] >= NO_BUBBLES:
         if s["fi_probe"] > 1.3:
             return "de-fluidized (lifted plug)"
@@ -128,6 +149,8 @@ def summarize(folder, end_time, window, wall, code):
          "coalescences": stats.get("coalescences_per_second", math.nan),
          "expansion": plot_run.time_average(t, m["bed_surface_height"], start) / STATIC_BED,
          "surface_end": m["bed_surface_height"][-1],
+         "surface_rise": surface_motion(t, m["bed_surface_height"], start)[0],
+         "surface_fallback": surface_motion(t, m["bed_surface_height"], start)[1],
          "solids_speed_max": max(m["solids_speed_max"]), "gas_speed_max": max(m["gas_speed_max"]),
          "cells": [min(m["active_cells"]), max(m["active_cells"])]}
     s["regime"] = regime(s)
@@ -174,13 +197,26 @@ def seed_statements(loading, s, dry):
     return "; ".join(out)
 
 
+def with_surface_motion(summary, kept):
+    """A stored summary with the bed surface's rise and fallback over its window (from
+    the stored monitors.csv.gz where the summary predates them) and its regime again."""
+    if "surface_rise" not in summary and os.path.exists(os.path.join(kept, "monitors.csv.gz")):
+        import csv
+        with gzip.open(os.path.join(kept, "monitors.csv.gz"), "rt") as f:
+            rows = [r for r in csv.DictReader(f) if float(r["time"]) <= summary["reached"] + 1e-12]
+        summary["surface_rise"], summary["surface_fallback"] = surface_motion(
+            [float(r["time"]) for r in rows], [float(r["bed_surface_height"]) for r in rows], summary["start"])
+        summary["regime"] = regime(summary)
+    return summary
+
+
 def table(levels, end_time):
     results = os.path.join(root, "benchmarks", "results", "seed_column_study")
     stored = {}
     for loading in LOADINGS:
         path = os.path.join(results, run_name(loading, levels), "summary.json")
         if os.path.exists(path):
-            stored[loading] = json.load(open(path))
+            stored[loading] = with_surface_motion(json.load(open(path)), os.path.dirname(path))
     dry = stored.get("dry")
     if dry is not None and dry["reached"] < dry["end"] - 1e-9:
         dry = None  # compare only with a finished dry run
