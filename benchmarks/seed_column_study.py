@@ -94,7 +94,7 @@ def case_text(loading, levels, end_time, window, folder, statistics_start=None):
     return (read_case("seed000_small_column") + "\n" + amr +
             f"subsection wet particles\n set liquid loading = {delta:.6g}\nend\n"
             f"subsection time stepping\n set end time = {end_time}\nend\n"
-            f"subsection statistics\n set time averages = true\n set start time = {statistics_start:g}\n"
+            f"subsection statistics\n set time averages = true\n set start time = {statistics_start}\n"
             " set radial profile heights = 0.025, 0.076\nend\n"
             "subsection checkpoint\n set wall time interval = 600\nend\n"
             f"subsection output\n set folder = {folder}\n set field interval = 0.05\n"
