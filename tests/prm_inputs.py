@@ -564,6 +564,15 @@ code, _, err = run(case_into(mesh_folder, f"subsection mesh\n set file = {mesh_c
 open(mesh_copy, "w").write(open(mesh_copy).read().replace('nx = {5', 'nx = {6'))
 refused("resume after the mesh file changed", resume_of(mesh_folder, f"subsection mesh\n set file = {mesh_copy}\nend"),
         "checkpoint/resume", mesh_folder, contains="mesh/file")
+# the same numbers written differently are the same case (2500 and 2.5e3; 0, -9.81, 0
+# without blanks and with trailing zeros); another number is not
+folder = copy_of_results("identity")
+code, _, err = run(resume_of(folder, "subsection physical properties\n set particle density = 2.5e3\n"
+                                     " set gravity = 0.0,-9.810,0\nend\n"), "identity_rewritten")
+check("resume with the same numbers written differently continues the run", code == 0, f"exit {code} '{last_line(err)}'")
+folder = copy_of_results("identity")
+refused("resume with gravity -9.8", resume_of(folder, "subsection physical properties\n set gravity = 0, -9.8, 0\nend"),
+        "checkpoint/resume", folder, contains="physical properties/gravity")
 # what may change: the end time and the solver tolerance; rows the run wrote after the
 # checkpoint are its own and are replaced
 folder = copy_of_results("identity")

@@ -12,6 +12,8 @@
 #include <boost/serialization/vector.hpp>
 
 #include <algorithm>
+#include <cctype>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -147,6 +149,51 @@ std::vector<std::string> triangulation_files (const std::string &folder)
   return names;
 }
 
+/** A parameter's text as words (the runs between separators and blanks) and the
+ * separators ',', ';', ':' themselves. */
+std::vector<std::string> parameter_tokens (const std::string &text)
+{
+  std::vector<std::string> tokens;
+  std::string              word;
+  for (const char c : text + ' ')
+    if (c == ',' || c == ';' || c == ':' || std::isspace (static_cast<unsigned char> (c)))
+    {
+      if (!word.empty ())
+        tokens.push_back (word);
+      word.clear ();
+      if (!std::isspace (static_cast<unsigned char> (c)))
+        tokens.emplace_back (1, c);
+    }
+    else
+      word += c;
+  return tokens;
+}
+
+/** Two texts of one parameter that mean the same: the same separators and words, a
+ * number equal to a number however written ("1" and "1.0", "0.05" and "5e-2", "0,
+ * -9.81" and "0,-9.81"). */
+bool same_parameter_value (const std::string &a, const std::string &b)
+{
+  if (a == b)
+    return true;
+  const std::vector<std::string> ta = parameter_tokens (a), tb = parameter_tokens (b);
+  if (ta.size () != tb.size ())
+    return false;
+  const auto number = [] (const std::string &word, double &value)
+  {
+    char *end = nullptr;
+    value     = std::strtod (word.c_str (), &end);
+    return !word.empty () && end == word.c_str () + word.size ();
+  };
+  for (std::size_t i = 0; i < ta.size (); ++i)
+  {
+    double x = 0, y = 0;
+    if (ta[i] != tb[i] && !(number (ta[i], x) && number (tb[i], y) && x == y))
+      return false;
+  }
+  return true;
+}
+
 /**
  * The checkpoint is this case's: the same mesh file (its bytes), the same parameters
  * but for those that may change on resume, and the run's own monitors.csv and bubble
@@ -172,10 +219,10 @@ void check_identity (const CheckpointState &state,
     // a parameter newer than the checkpoint: its default is what that run did
     const auto declared = parameters.defaults.find (name);
     if (it == saved.end () && declared != parameters.defaults.end () &&
-        declared->second == value)
+        same_parameter_value (declared->second, value))
       continue;
     require (
-        it != saved.end () && it->second == value,
+        it != saved.end () && same_parameter_value (it->second, value),
         "checkpoint/resume",
         name + " = '" + value + "', the checkpoint's run had '" +
             (it == saved.end () ? std::string ("no such parameter") : it->second) +
