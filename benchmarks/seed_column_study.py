@@ -340,6 +340,34 @@ def pictures(levels, work, window):
     return lines
 
 
+def run_piece(name, work, case, end_time, window, env, extra=None):
+    """Writes WORK/NAME.prm (CASE), runs it on 2 ranks (continued from its checkpoint, or
+    from its stored continue.tar.gz in a build/ without it) to END_TIME, and keeps what it
+    reached: the stored results (the summary with EXTRA added) and, when the piece ended
+    with a checkpoint, continue.tar.gz. Returns (exit code, summary or None without a
+    monitors.csv)."""
+    folder, prm = os.path.join(work, name), os.path.join(work, name + ".prm")
+    sidecars = [os.path.join(work, name + ".log"), os.path.join(work, name + ".wall")]
+    archive = os.path.join(root, "benchmarks", "results", "seed_column_study", name, ARCHIVE)
+    if restore_run(archive, folder):
+        print(f"{name}: continues from {os.path.relpath(archive, root)}", flush=True)
+    open(prm, "w").write(case)
+    command = ["mpirun", "-np", "2", os.path.join(root, "build", "wetbed"), prm]
+    code, wall = run_resumable(command, folder, *sidecars, True, env, end_time)
+    if not os.path.exists(os.path.join(folder, "monitors.csv")):
+        print(f"{name}: exit {code}, no monitors.csv (see {name}.log)", flush=True)
+        return code, None
+    summary = dict(summarize(folder, end_time, window, wall, code), **(extra or {}))
+    store(folder, name, summary)
+    if code == 0 and summary["reached"] >= end_time - 1e-9:  # its pictures, while its fields are here
+        render(name, work, window)
+    if code in (0, 4) and os.path.isdir(os.path.join(folder, "checkpoint")):
+        size = archive_run(folder, sidecars, archive)
+        print(f"{name}: checkpoint kept in {os.path.relpath(archive, root)} ({size / 1e6:.1f} MB)", flush=True)
+    print(f"{name}: exit {code}, t = {summary['reached']:.3f} s, wall {wall:.0f} s, {summary['regime']}", flush=True)
+    return code, summary
+
+
 def fork_name(loading, levels, fork_time):
     """The run that continues uniform_<loading> from its end FORK_TIME with LEVELS levels
     of AMR (0: on the base mesh, the reference)."""
@@ -359,10 +387,8 @@ def fork(loading, levels, args, work, env):
     if restore_run(os.path.join(results, source, ARCHIVE), source_folder):
         print(f"{source}: restored from its stored checkpoint", flush=True)
     name = fork_name(loading, levels, args.end_time)
-    folder, prm = os.path.join(work, name), os.path.join(work, name + ".prm")
-    sidecars = [os.path.join(work, name + ".log"), os.path.join(work, name + ".wall")]
-    archive = os.path.join(results, name, ARCHIVE)
-    restore_run(archive, folder)
+    folder = os.path.join(work, name)
+    restore_run(os.path.join(results, name, ARCHIVE), folder)
     if not os.path.isdir(os.path.join(folder, "checkpoint")):
         if not os.path.isdir(os.path.join(source_folder, "checkpoint")) or \
                 wetbed_results.monitors(source_folder)["time"][-1] < args.end_time - 1e-9:
@@ -372,18 +398,10 @@ def fork(loading, levels, args, work, env):
             shutil.rmtree(folder)
         shutil.copytree(source_folder, folder, ignore=lambda d, names: [
             n for n in names if FIELD_OUTPUT.match(n) or n in (".wetbed.lock", "checkpoint.previous", "checkpoint.partial")])
-        with open(sidecars[1], "w") as f:  # the fork's own wall time: run_resumable continues the checkpoint
+        with open(os.path.join(work, name + ".wall"), "w") as f:  # the fork's own wall time: continued from here
             f.write("0")
-    open(prm, "w").write(case_text(loading, levels, args.fork_end, args.window, folder,
-                                   statistics_start=args.end_time - args.window))
-    command = ["mpirun", "-np", "2", os.path.join(root, "build", "wetbed"), prm]
-    code, wall = run_resumable(command, folder, *sidecars, True, env, args.fork_end)
-    summary = summarize(folder, args.fork_end, args.window, wall, code)
-    summary["fork"] = args.end_time
-    store(folder, name, summary)
-    if code in (0, 4) and os.path.isdir(os.path.join(folder, "checkpoint")):
-        archive_run(folder, sidecars, archive)
-    print(f"{name}: exit {code}, t = {summary['reached']:.3f} s, wall {wall:.0f} s, {summary['regime']}", flush=True)
+    case = case_text(loading, levels, args.fork_end, args.window, folder, statistics_start=args.end_time - args.window)
+    code, summary = run_piece(name, work, case, args.fork_end, args.window, env, {"fork": args.end_time})
     return summary if code in (0, 4) else None
 
 
@@ -465,26 +483,10 @@ def main():
         return
     for loading in ([] if args.table else args.only or LOADINGS):  # in the order given
         name = run_name(loading, args.levels)
-        folder, prm = os.path.join(work, name), os.path.join(work, name + ".prm")
-        open(prm, "w").write(case_text(loading, args.levels, args.end_time, args.window, folder))
-        command = ["mpirun", "-np", "2", os.path.join(root, "build", "wetbed"), prm]
-        sidecars = [os.path.join(work, name + ".log"), os.path.join(work, name + ".wall")]
-        archive = os.path.join(root, "benchmarks", "results", "seed_column_study", name, ARCHIVE)
-        if restore_run(archive, folder):
-            print(f"{name}: continues from {os.path.relpath(archive, root)}", flush=True)
-        code, wall = run_resumable(command, folder, *sidecars, True, env, args.end_time)
-        if not os.path.exists(os.path.join(folder, "monitors.csv")):
-            print(f"{name}: exit {code}, no monitors.csv (see {name}.log)", flush=True)
+        case = case_text(loading, args.levels, args.end_time, args.window, os.path.join(work, name))
+        code, summary = run_piece(name, work, case, args.end_time, args.window, env)
+        if summary is None:
             continue
-        summary = summarize(folder, args.end_time, args.window, wall, code)
-        store(folder, name, summary)
-        if code == 0 and summary["reached"] >= args.end_time - 1e-9:  # its pictures, while its fields are here
-            render(name, work, args.window)
-        if code in (0, 4) and os.path.isdir(os.path.join(folder, "checkpoint")):
-            size = archive_run(folder, sidecars, archive)
-            print(f"{name}: checkpoint kept in {os.path.relpath(archive, root)} ({size / 1e6:.1f} MB)", flush=True)
-        print(f"{name}: exit {code}, t = {summary['reached']:.3f} s, wall {wall:.0f} s, {summary['regime']}",
-              flush=True)
         if code == 4:  # stopped with a checkpoint (SIGUSR2): the later runs wait for the next call
             print(f"{name}: stopped with a checkpoint; run the same command again to continue", flush=True)
             break
