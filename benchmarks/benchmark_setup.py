@@ -110,11 +110,14 @@ def run_resumable(command, folder, log, wall_file, resumable=True, env=None, end
     with open(log, "a" if resume else "w") as out:
         process = subprocess.Popen(command + (["--resume"] if resume else ["--overwrite"]),
                                    stdout=out, stderr=subprocess.STDOUT, env=env)
-        while process.poll() is None:
-            time.sleep(5)
-            if resumable:
-                with open(wall_file, "w") as f:
-                    f.write(str(earlier + time.time() - begin))
+        while True:
+            try:  # returns as the run ends, so the wall time is not rounded to the poll
+                process.wait(timeout=5)
+                break
+            except subprocess.TimeoutExpired:
+                if resumable:
+                    with open(wall_file, "w") as f:
+                        f.write(str(earlier + time.time() - begin))
     wall = earlier + time.time() - begin
     if resumable:
         with open(wall_file, "w") as f:

@@ -123,7 +123,7 @@ def record(label, name, folder, code, wall):
               "alpha": (min(values("alpha_s_min")), max(values("alpha_s_max"))) if rows else (math.nan, math.nan),
               "theta": (min(values("theta_min")), max(values("theta_max"))) if rows else (math.nan, math.nan),
               "drift": max(abs(v) for v in values("solids_mass_drift")) if rows else math.nan,
-              "finite": all(math.isfinite(float(v)) for r in rows for v in r.values() if v != ""),
+              "finite": all(math.isfinite(float(v)) for r in rows for k, v in r.items() if v != "" and k != "run"),
               "report": os.path.exists(os.path.join(folder, "failure_report.txt"))}
     if code == 0:
         result["outcome"] = "completed"
