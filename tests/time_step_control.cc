@@ -84,6 +84,24 @@ int main (int argc, char **argv)
   p.adaptive = false;
   check_close (controller.next (1e-3, speeds, 5e-4, 1e-1), 1e-3, 1e-14, "not adaptive");
 
+  // towards the end time: the planned step, or the rest where it is at most 1% longer,
+  // so that no sliver is left (20 steps of 0.25 ms and an end time 1e-9 s above 5 ms)
+  const double end = 20 * 2.5e-4 + 1e-9;
+  check_close (
+      TimeStepController::step_towards_end (2.5e-4, 0.0, end), 2.5e-4, 1e-14, "far");
+  check_close (TimeStepController::step_towards_end (2.5e-4, 19 * 2.5e-4, end),
+               2.5e-4 + 1e-9,
+               1e-14,
+               "the last step takes the sliver");
+  check_close (TimeStepController::step_towards_end (2.5e-4, 4.9e-3, 5e-3),
+               1e-4,
+               1e-14,
+               "a shorter rest: stop at the end");
+  check_close (TimeStepController::step_towards_end (1e-3, 0, 1.02e-3),
+               1e-3,
+               1e-14,
+               "2% longer: two steps");
+
   // the estimate: 0 for alpha linear in time, whatever the steps
   const double dt = 2e-3, dt_old = 1e-3;
   check (estimate ([] (double t) { return 0.3 + 5 * t; }, dt, dt_old, {1, 1, 1}) < 1e-15,

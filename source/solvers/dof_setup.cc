@@ -137,7 +137,7 @@ void TwoFluidSolver<dim>::report_mesh (
     pcout << "Mesh: " << triangulation.n_global_active_cells () << " cells; flow DoFs "
           << dofs_per_block[0] << " (u_g, u_s) + " << dofs_per_block[1]
           << " (p'), alpha_s DoFs " << alpha_dof_handler.n_dofs () << std::endl;
-  if (!initialized && Utilities::MPI::n_mpi_processes (communicator) > 1)
+  if (!initialized)
   {
     unsigned int                                   cells = 0, wall_faces = 0;
     const auto                                     ids = boundaries;

@@ -30,4 +30,12 @@ double TimeStepController::next (const double      dt,
     next = std::min (next, dt * std::max (0.5, 0.9 * std::sqrt (tolerance / time_error)));
   return next;
 }
+
+double TimeStepController::step_towards_end (const double dt,
+                                             const double time,
+                                             const double end_time)
+{
+  const double rest = end_time - time;
+  return rest <= 1.01 * dt ? rest : dt;
+}
 } // namespace wetbed

@@ -720,7 +720,8 @@ template <int dim>
 void TwoFluidSolver<dim>::advance ()
 {
   const auto &ts = parameters.time;
-  double      dt = std::min (stepping.time_step, ts.end_time - stepping.time);
+  double      dt = TimeStepController::step_towards_end (
+      stepping.time_step, stepping.time, ts.end_time);
   // save the state to retry from
   const BlockVector saved_flow (fields.flow);
   unsigned int      order         = (stepping.step_number == 0) ? 1 : ts.bdf_order;
