@@ -14,49 +14,43 @@ The runs go in turn (A B C ... A B C ...) --repeats times and each figure is the
 over the repeats, so that the machine's drifting load falls on all runs alike. Writes
 the 'cell_cost' section of doc/benchmarks.md.
 
-usage: python3 benchmarks/cell_cost.py [--steps-2d 20] [--steps-3d 24] [--repeats 3]
+usage: python3 benchmarks/cell_cost.py [--steps-2d 20] [--steps-3d 24] [--repeats 3] [--no-doc]
 (build first: bash scripts/build.sh)
 """
 import argparse
 import os
 import re
 import statistics
-import subprocess
 
-from benchmark_setup import read_case, replace_doc_section, repository_root, timer_seconds, write_case
+from benchmark_setup import read_case, replace_doc_section, repository_root, solver_run, timer_seconds
 
 root = repository_root()
 parser = argparse.ArgumentParser()
 parser.add_argument("--steps-2d", type=int, default=20)
 parser.add_argument("--steps-3d", type=int, default=24)
 parser.add_argument("--repeats", type=int, default=3)
+parser.add_argument("--no-doc", action="store_true", help="print the table only")
 args = parser.parse_args()
 work = os.path.join(root, "build", "benchmarks", "cell_cost")
 os.makedirs(work, exist_ok=True)
 
 
 def run(name, case, steps, dt, sections):
-    """Runs CASE with STEPS fixed steps of DT; returns its cost figures."""
+    """Runs CASE with STEPS fixed steps of DT (benchmark_setup.solver_run); returns its
+    cost figures, read from the run's log."""
     fixed = (f"subsection time stepping\n set adaptive = false\n set initial time step = {dt}\n"
              f" set maximum time step = {dt}\nend\n"
-             "subsection spectrum\n set enabled = false\nend\n"
-             "subsection checkpoint\n set at end = false\nend\n")
-    prm, folder, log = write_case(work, name, read_case(case), steps * dt * (1 + 1e-9), sections + fixed,
-                                  field_interval=0, progress_interval=100000)
-    text = subprocess.run([os.path.join(root, "build", "wetbed"), prm, "--overwrite"], capture_output=True,
-                          text=True, check=True).stdout
-    open(log, "w").write(text)
-    cells = int(re.search(r"Mesh: (\d+) cells", text).group(1))
+             "subsection spectrum\n set enabled = false\nend\n")
+    figures = solver_run(root, work, name, read_case(case), steps * dt * (1 + 1e-9), sections + fixed)
+    text = open(os.path.join(work, name + ".log")).read()
+    cells, done, iterations = figures["cells"], figures["steps"], figures["iterations"]
     walls = int(re.search(r"wall faces per rank (\d+)", text).group(1))
-    done = int(re.search(r"Finished: (\d+) steps", text).group(1))
     assemblies = int(re.search(r"\| flow assembly\s*\|\s*(\d+)", text).group(1))
-    iterations = float(re.search(r"FGMRES iterations ([\d.e+-]+) per step", text).group(1)) * done
-    total = float(re.search(r"Total wallclock time elapsed\s*\|\s*([\d.e+-]+)s", text).group(1))
-    setup = timer_seconds(text, "setup") + timer_seconds(text, "output") + timer_seconds(text, "matrix-free setup")
+    setup = sum(timer_seconds(text, n) for n in ("setup", "output", "matrix-free setup") if timer_seconds(text, n) == timer_seconds(text, n))
     r = dict(name=name, cells=cells, walls=walls, steps=done, assemblies=assemblies, iterations=iterations,
              assembly=timer_seconds(text, "flow assembly") / assemblies / cells * 1e6,
-             krylov=timer_seconds(text, "Krylov solve") / max(iterations, 1) / cells * 1e6,
-             step=(total - setup) / done / cells * 1e6)
+             krylov=figures["krylov"] / max(iterations, 1) / cells * 1e6,
+             step=(figures["total"] - setup) / done / cells * 1e6)
     print(f"{name}: {cells} cells, {walls} wall faces, {done} steps, {iterations / done:.1f} FGMRES per step, "
           f"assembly {r['assembly']:.1f} us per cell, Krylov {r['krylov']:.2f} us per cell and iteration, "
           f"step {r['step']:.0f} us per cell", flush=True)
@@ -98,4 +92,5 @@ for key, label in (("assembly", "flow assembly"), ("krylov", "Krylov iteration")
                  f"{ns[key]:.1f} µs with no-slip solids walls.")
 for line in lines:
     print(line)
-replace_doc_section(root, "cell_cost", "What a cell costs", lines)
+if not args.no_doc:
+    replace_doc_section(root, "cell_cost", "What a cell costs", lines)
