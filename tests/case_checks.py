@@ -883,6 +883,9 @@ elif check == "divergence":
         report = os.path.join(folder, "failure_report.txt")
         text = open(report).read() if os.path.isfile(report) else ""
         print(text[:1500])
+        if not (cause in text and detail in text):
+            # what the run printed, so that a failure elsewhere (CI) shows its cause
+            print(run.stdout[-3000:], run.stderr[-2000:])
         expect(cause in text and detail in text, f"{name}: the report names the check ({cause.strip()})")
         expect(("diagnosis in" in run.stderr + run.stdout) and "last good state" in run.stderr + run.stdout,
                f"{name}: the one-line error points at the report and the last good state")

@@ -98,9 +98,21 @@ int main (int argc, char **argv)
                1e-14,
                "a shorter rest: stop at the end");
   check_close (TimeStepController::step_towards_end (1e-3, 0, 1.02e-3),
+               0.51e-3,
+               1e-14,
+               "2% longer: two equal steps");
+  check_close (TimeStepController::step_towards_end (1e-3, 0.51e-3, 1.02e-3),
+               0.51e-3,
+               1e-14,
+               "the second of the two equal steps ends the run");
+  check_close (TimeStepController::step_towards_end (1e-3, 0, 1.999e-3),
+               0.9995e-3,
+               1e-14,
+               "a rest just short of 2 dt: two equal steps");
+  check_close (TimeStepController::step_towards_end (1e-3, 0, 2e-3),
                1e-3,
                1e-14,
-               "2% longer: two steps");
+               "a rest of 2 dt: a full step");
 
   // the estimate: 0 for alpha linear in time, whatever the steps
   const double dt = 2e-3, dt_old = 1e-3;

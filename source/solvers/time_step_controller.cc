@@ -35,7 +35,11 @@ double TimeStepController::step_towards_end (const double dt,
                                              const double time,
                                              const double end_time)
 {
+  // a rest up to 1% longer than dt: one step; up to 2 dt: two equal steps (the first of
+  // them here), so that the last step is never shorter than half the one before it
   const double rest = end_time - time;
-  return rest <= 1.01 * dt ? rest : dt;
+  if (rest <= 1.01 * dt)
+    return rest;
+  return rest < 2 * dt ? 0.5 * rest : dt;
 }
 } // namespace wetbed

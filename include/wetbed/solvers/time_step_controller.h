@@ -38,10 +38,11 @@ public:
                double            node_spacing,
                double            time_error) const;
 
-  /** The step to take from `time` with the planned step `dt`: dt, or the rest up to
-   * `end_time` where that is at most 1% longer than dt, so that no sliver of a step is
-   * left for the end (a step far shorter than the last makes the BDF2 coefficients and
-   * the pressure scale with 1/dt blow up). */
+  /** The step to take from `time` with the planned step `dt`: the rest up to
+   * `end_time` where that is at most 1% longer than dt, half the rest where that is
+   * shorter than 2 dt, else dt; so that no sliver of a step is left for the end (a step
+   * far shorter than the last makes the BDF2 coefficients and the pressure, which
+   * scales with 1/dt, blow up). */
   static double step_towards_end (double dt, double time, double end_time);
 
   /** The step the Courant target allows alone. */
