@@ -50,6 +50,10 @@ for level in (1, 2):
         VARIANTS[f"L{level}_outer{tolerance}"] = (level, f"outer tolerance {tolerance}, ≤ 3",
                                                   TESTED.format(tolerance))
     VARIANTS[f"L{level}_outer0.1_K2"] = (level, "outer tolerance 0.1, ≤ 2", TESTED.format("0.1").replace("= 3", "= 2"))
+    VARIANTS[f"L{level}_outer0.3_K2"] = (level, "outer tolerance 0.3, ≤ 2", TESTED.format("0.3").replace("= 3", "= 2"))
+    # one outer iteration: the flow solve at the closures of the last step, then transport
+    VARIANTS[f"L{level}_K1"] = (level, "1 outer iteration, forcing 0.1", TESTED.format("0.1").replace("= 3", "= 1"))
+    VARIANTS[f"L{level}_K1_exact"] = (level, "1 outer iteration, solve to 1e-8", FIXED.replace("= 2", "= 1"))
 parser = argparse.ArgumentParser()
 parser.add_argument("--end-time", type=float, default=1.5)
 parser.add_argument("--start-up", type=float, default=0.5)

@@ -86,14 +86,16 @@ def run_name(loading, levels):
 
 def case_text(loading, levels, end_time, window, folder, statistics_start=None):
     """The case of one run; STATISTICS_START (default end_time - window) is the time
-    averages' start, which a resumed run keeps from the run it continues."""
+    averages' start, which a resumed run keeps from the run it continues. Every loading
+    runs with two outer iterations per step, the setting of the rows already stored, so
+    that the rows compare."""
     statistics_start = end_time - window if statistics_start is None else statistics_start
     delta = 0.0 if loading == "dry" else float(loading) * 1e-2
     amr = (f"subsection adaptive refinement\n set enabled = true\n set maximum level = {levels}\nend\n"
            if levels > 0 else "subsection adaptive refinement\n set enabled = false\nend\n")
     return (read_case("seed000_small_column") + "\n" + amr +
             f"subsection wet particles\n set liquid loading = {delta:.6g}\nend\n"
-            f"subsection time stepping\n set end time = {end_time}\nend\n"
+            f"subsection time stepping\n set end time = {end_time}\n set outer iterations = 2\nend\n"
             f"subsection statistics\n set time averages = true\n set start time = {statistics_start}\n"
             " set radial profile heights = 0.025, 0.076\nend\n"
             "subsection checkpoint\n set wall time interval = 600\nend\n"

@@ -68,9 +68,12 @@ SETTINGS = {  # name: (description, sections given the case's prm text)
     "error3e-4": ("defaults, time error tolerance 3e-4, maximum step x 4", lambda prm: (
         "subsection time stepping\n  set time error tolerance = 3e-4\n"
         f"  set maximum time step = {4 * value(prm, 'time stepping', 'maximum time step', 2e-3):g}\nend\n")),
+    "outer1": ("defaults, 1 outer iteration", lambda prm: "subsection time stepping\n  set outer iterations = 1\nend\n"),
+    "outer0.3": ("defaults, outer tolerance 0.3", lambda prm: "subsection time stepping\n  set outer iterations = 2\n"
+                 "  set outer tolerance = 0.3\nend\n"),
 }
 MAIN = ["a", "b", "noise", "reference"]
-VARIANTS = ["cfl1", "cfl0.25", "error1e-3", "error3e-4"]
+VARIANTS = ["cfl1", "cfl0.25", "error1e-3", "error3e-4", "outer1", "outer0.3"]
 
 
 def value(prm, subsection, name, default):
