@@ -10,7 +10,10 @@ adds, by default on level 1 and 2:
   - outer iterations: a fixed two with every solve to 1e-8 (L<n>_fixed2) against the
     convergence test at outer tolerance 0.1 (the default) and 0.02 (at most 3); run a
     level's three side by side for their cost ratios:
-    --runs L1_fixed2 L1_outer0.1 L1_outer0.02 L1_outer0.1_K2 --jobs 4.
+    --runs L1_fixed2 L1_outer0.1 L1_outer0.02 L1_outer0.1_K2 --jobs 4;
+  - one outer iteration per step, inexact (L<n>_K1) and exact (L<n>_K1_exact), and the
+    looser test tau = 0.3 (L<n>_outer0.3_K2), beside the defaults' settings:
+    --runs L2_outer0.1_K2 L2_K1 L2_K1_exact --jobs 3.
 (AMR against uniform meshes is benchmarks/amr_vs_uniform.py.)
 Quantities of interest after --start-up: time-averaged FI and bed surface height; errors:
 FI against the exact 1 and against the finest run (wetbed_3), bed surface against the

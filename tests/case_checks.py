@@ -1049,7 +1049,9 @@ elif check == "statistics":
             f"subsection statistics\n set time averages = true\n set start time = {start}\nend\n"
             "subsection checkpoint\n set interval = 7\n set at end = false\nend\n"
             "subsection output\n set field interval = 1e-9\n set monitor interval = 1\n"
-            " set field format = vtu and hdf5\nend\n")
+            " set field format = vtu and hdf5\nend\n"
+            # the resumed run must end with the unbroken run's averages to 1e-10
+            + EXACT_SOLVES)
     folder = os.path.join(work, "statistics")
     rows = run("quick_start_2d", over, 1, folder)
     frames = render_fields.hdf5_frames(folder)
