@@ -84,35 +84,28 @@ int main (int argc, char **argv)
   p.adaptive = false;
   check_close (controller.next (1e-3, speeds, 5e-4, 1e-1), 1e-3, 1e-14, "not adaptive");
 
-  // towards the end time: the planned step, or the rest where it is at most 1% longer,
-  // so that no sliver is left (20 steps of 0.25 ms and an end time 1e-9 s above 5 ms)
-  const double end = 20 * 2.5e-4 + 1e-9;
-  check_close (
-      TimeStepController::step_towards_end (2.5e-4, 0.0, end), 2.5e-4, 1e-14, "far");
-  check_close (TimeStepController::step_towards_end (2.5e-4, 19 * 2.5e-4, end),
-               2.5e-4 + 1e-9,
-               1e-14,
-               "the last step takes the sliver");
-  check_close (TimeStepController::step_towards_end (2.5e-4, 4.9e-3, 5e-3),
-               1e-4,
-               1e-14,
-               "a shorter rest: stop at the end");
-  check_close (TimeStepController::step_towards_end (1e-3, 0, 1.02e-3),
-               0.51e-3,
-               1e-14,
-               "2% longer: two equal steps");
-  check_close (TimeStepController::step_towards_end (1e-3, 0.51e-3, 1.02e-3),
-               0.51e-3,
-               1e-14,
-               "the second of the two equal steps ends the run");
-  check_close (TimeStepController::step_towards_end (1e-3, 0, 1.999e-3),
-               0.9995e-3,
-               1e-14,
-               "a rest just short of 2 dt: two equal steps");
-  check_close (TimeStepController::step_towards_end (1e-3, 0, 2e-3),
-               1e-3,
-               1e-14,
-               "a rest of 2 dt: a full step");
+  // towards the end time: the planned step, the rest where it is at most 1% longer (no
+  // sliver left: 20 steps of 0.25 ms and an end time 1e-9 s above 5 ms), and a rest
+  // shorter than two steps split into two equal ones
+  struct EndCase
+  {
+    double      dt, time, end, expected;
+    const char *what;
+  };
+  const double  end         = 20 * 2.5e-4 + 1e-9;
+  const EndCase end_cases[] = {
+      {2.5e-4, 0.0, end, 2.5e-4, "far"},
+      {2.5e-4, 19 * 2.5e-4, end, 2.5e-4 + 1e-9, "the last step takes the sliver"},
+      {2.5e-4, 4.9e-3, 5e-3, 1e-4, "a shorter rest: stop at the end"},
+      {1e-3, 0, 1.02e-3, 0.51e-3, "2% longer: two equal steps"},
+      {1e-3, 0.51e-3, 1.02e-3, 0.51e-3, "the second of the two equal steps ends the run"},
+      {1e-3, 0, 1.999e-3, 0.9995e-3, "a rest just short of 2 dt: two equal steps"},
+      {1e-3, 0, 2e-3, 1e-3, "a rest of 2 dt: a full step"}};
+  for (const EndCase &c : end_cases)
+    check_close (TimeStepController::step_towards_end (c.dt, c.time, c.end),
+                 c.expected,
+                 1e-14,
+                 c.what);
 
   // the estimate: 0 for alpha linear in time, whatever the steps
   const double dt = 2e-3, dt_old = 1e-3;
